@@ -1,0 +1,66 @@
+// One job: a case x a method x a seed, and the record it produces.
+#pragma once
+
+#include "methods/method.h"
+#include "metrics/evaluation.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace holebench::harness {
+
+struct Job {
+  std::string case_id;
+  std::string method_id;
+  std::uint64_t seed = 0;
+
+  /// Stable key used to match records across runs: "case_id|method_id|seed".
+  std::string id() const;
+};
+
+/// How a job ended. Everything but `Ok` carries a message.
+enum class JobStatus {
+  Ok,            ///< the method returned and every metric was computed
+  Partial,       ///< the method left some holes open (it said so)
+  MethodFailed,  ///< the method returned a failure status
+  InvalidInput,  ///< the case could not be generated or read
+  Error,         ///< an exception escaped the method or a metric
+};
+const char* to_string(JobStatus status);
+
+struct HoleRecord {
+  int hole_index = 0;
+  std::size_t loop_size = 0;
+  bool closed = false;
+  std::size_t new_faces = 0;
+  std::string note;
+};
+
+struct JobRecord {
+  Job job;
+  std::string case_family;
+  std::string case_kind;
+  double noise_percent = 0.0;
+  std::string user = "no_user";
+  int user_interventions = 0;
+  JobStatus status = JobStatus::Ok;
+  std::string message;
+  std::vector<MetricValue> metrics;
+  std::vector<PhaseTiming> phases;
+  std::vector<HoleRecord> holes;
+  double method_seconds = 0.0;
+  std::string snapshot;  ///< PNG path relative to the output folder, or empty
+};
+
+struct JobOptions {
+  EvaluationOptions evaluation;
+  std::filesystem::path snapshot_dir;  ///< empty: no snapshot
+};
+
+/// Generates the case, runs the method with no user, evaluates, renders. Never throws:
+/// every failure becomes the record's status and message.
+JobRecord run_job(const Job& job, const JobOptions& options);
+
+}  // namespace holebench::harness

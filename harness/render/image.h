@@ -1,0 +1,29 @@
+// An 8-bit RGB image and its PNG output (through OpenImageIO).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace holebench::render {
+
+struct Rgb {
+  float r = 0.0f, g = 0.0f, b = 0.0f;  ///< linear 0..1
+};
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> pixels;  ///< row-major RGB, top row first
+
+  Image(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h * 3, 0) {}
+  void set(int x, int y, const Rgb& colour);
+};
+
+/// Writes `image` as PNG. Throws std::runtime_error with OpenImageIO's message on failure.
+void write_png(const Image& image, const std::filesystem::path& path);
+
+/// OpenImageIO's version string, for the results' context block.
+const char* openimageio_version();
+
+}  // namespace holebench::render

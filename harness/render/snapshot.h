@@ -1,0 +1,36 @@
+// Snapshots of a mesh by Embree ray casting: one primary ray per sample, headlight
+// Lambert shading, a colour per region, the patch (new faces) in a distinct colour and
+// back faces (seen through a hole) dark.
+#pragma once
+
+#include "core/mesh.h"
+#include "harness/render/image.h"
+
+namespace holebench::render {
+
+struct Camera {
+  Point target{0.0, 0.0, 0.0};      ///< the point the camera looks at
+  Point direction{0.0, 0.0, -1.0};  ///< viewing direction (from the camera to the target)
+  double distance = 1.0;            ///< camera distance from the target
+  double field_of_view_degrees = 40.0;
+};
+
+struct SnapshotOptions {
+  int width = 480;
+  int height = 360;
+  int samples_per_axis = 2;  ///< supersampling: samples_per_axis^2 rays per pixel
+};
+
+/// A camera looking along `direction` at `target` from just far enough that a sphere of
+/// `radius` around the target fills the view.
+Camera frame_sphere(const Point& target, double radius, const Point& direction,
+                    double field_of_view_degrees = 40.0);
+
+Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options = {});
+
+/// The colour of region `id` (a fixed palette, the same in every picture).
+Rgb region_colour(int id);
+/// The colour of new faces (the patch).
+Rgb patch_colour();
+
+}  // namespace holebench::render

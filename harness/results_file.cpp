@@ -1,0 +1,152 @@
+#include "harness/results_file.h"
+
+#include "harness/render/image.h"
+#include "holebench/version.h"
+
+#include <CGAL/version.h>
+#include <OpenMesh/Core/System/config.h>
+#include <embree3/rtcore_config.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <stdexcept>
+
+namespace holebench::harness {
+
+RunContext current_context(const std::string& suite) {
+  RunContext context;
+  context.code_version = HOLEBENCH_GIT_DESCRIBE;
+  context.build_type = HOLEBENCH_BUILD_TYPE;
+  char host[256] = {0};
+  if (gethostname(host, sizeof(host) - 1) == 0)
+    context.host = host;
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char stamp[32];
+  std::strftime(stamp, sizeof(stamp), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  context.created_utc = stamp;
+  context.suite = suite;
+  context.libraries = {
+      {"holebench", HOLEBENCH_VERSION},
+      {"CGAL", CGAL_VERSION_STR},
+      {"OpenMesh", fmt::format("{}.{}", OM_GET_VER, OM_GET_MAJ)},
+      {"Embree", RTC_VERSION_STRING},
+      {"OpenImageIO", render::openimageio_version()},
+      {"fmt",
+       fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
+      {"nlohmann_json", fmt::format("{}.{}.{}", NLOHMANN_JSON_VERSION_MAJOR,
+                                    NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)},
+      {"compiler", __VERSION__},
+  };
+  return context;
+}
+
+namespace {
+
+nlohmann::ordered_json to_json(const RunContext& context) {
+  nlohmann::ordered_json j;
+  j["schema_version"] = context.schema_version;
+  j["code_version"] = context.code_version;
+  j["build_type"] = context.build_type;
+  j["host"] = context.host;
+  j["created_utc"] = context.created_utc;
+  j["suite"] = context.suite;
+  nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
+  for (const auto& [name, version] : context.libraries)
+    libraries[name] = version;
+  j["libraries"] = libraries;
+  return j;
+}
+
+nlohmann::ordered_json to_json(const JobRecord& record) {
+  nlohmann::ordered_json j;
+  j["job_id"] = record.job.id();
+  j["case_id"] = record.job.case_id;
+  j["method"] = record.job.method_id;
+  j["seed"] = record.job.seed;
+  j["case_family"] = record.case_family;
+  j["case_kind"] = record.case_kind;
+  j["noise_percent"] = record.noise_percent;
+  j["user"] = record.user;
+  j["user_interventions"] = record.user_interventions;
+  j["status"] = to_string(record.status);
+  j["message"] = record.message;
+  nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
+  for (const auto& metric : record.metrics)
+    metrics[metric.name] = metric.value;
+  j["metrics"] = metrics;
+  nlohmann::ordered_json phases = nlohmann::ordered_json::object();
+  for (const auto& phase : record.phases)
+    phases[phase.phase + "_s"] = phase.seconds;
+  j["phases"] = phases;
+  nlohmann::ordered_json holes = nlohmann::ordered_json::array();
+  for (const auto& hole : record.holes) {
+    holes.push_back({{"hole_index", hole.hole_index},
+                     {"loop_size", hole.loop_size},
+                     {"closed", hole.closed},
+                     {"new_faces", hole.new_faces},
+                     {"note", hole.note}});
+  }
+  j["holes"] = holes;
+  j["snapshot"] = record.snapshot;
+  return j;
+}
+
+std::ofstream open_for_writing(const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out)
+    throw std::runtime_error("cannot write " + path.string());
+  return out;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos)
+    return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"')
+      quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+void write_results_json(const std::filesystem::path& path, const RunContext& context,
+                        const std::vector<JobRecord>& records) {
+  nlohmann::ordered_json j;
+  j["context"] = to_json(context);
+  j["results"] = nlohmann::ordered_json::array();
+  for (const auto& record : records)
+    j["results"].push_back(to_json(record));
+  auto out = open_for_writing(path);
+  out << j.dump(2) << '\n';
+  if (!out)
+    throw std::runtime_error("cannot write " + path.string());
+}
+
+void write_results_csv(const std::filesystem::path& path, const std::vector<JobRecord>& records) {
+  auto out = open_for_writing(path);
+  out << "job_id,case_id,method,seed,case_family,case_kind,noise_percent,status,metric,value\n";
+  for (const auto& record : records) {
+    const std::string prefix = fmt::format(
+        "{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
+        csv_field(record.job.method_id), record.job.seed, csv_field(record.case_family),
+        csv_field(record.case_kind), record.noise_percent, to_string(record.status));
+    if (record.metrics.empty())
+      out << prefix << ",,\n";
+    // fmt's "{}" is the shortest text that reads back to the same double.
+    for (const auto& metric : record.metrics) {
+      out << prefix << ',' << metric.name << ',' << fmt::format("{}", metric.value) << '\n';
+    }
+  }
+  if (!out)
+    throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace holebench::harness

@@ -1,0 +1,38 @@
+// `holebench run`: every selected case x method as a job, records written to a folder.
+#pragma once
+
+#include "harness/job.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace holebench::harness {
+
+struct RunOptions {
+  std::filesystem::path out_dir;
+  std::vector<std::string> case_ids;    ///< empty: every case of the catalog
+  std::vector<std::string> method_ids;  ///< empty: every method
+  std::vector<std::uint64_t> seeds{0};
+  bool snapshots = true;
+  bool progress = true;  ///< a line per job on stderr
+  EvaluationOptions evaluation;
+};
+
+struct RunSummary {
+  std::vector<JobRecord> records;
+  std::size_t failures = 0;  ///< jobs whose status is not ok
+  double seconds = 0.0;
+  std::filesystem::path results_json;
+  std::filesystem::path results_csv;
+};
+
+/// The jobs of `options`, in a fixed order (case, then method, then seed). Throws
+/// std::invalid_argument for an unknown case or method id.
+std::vector<Job> plan_jobs(const RunOptions& options);
+
+/// Runs the jobs one after another and writes results.json, results.csv and snapshots/
+/// into `options.out_dir`.
+RunSummary run_jobs(const RunOptions& options);
+
+}  // namespace holebench::harness

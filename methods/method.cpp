@@ -1,0 +1,17 @@
+#include "methods/method.h"
+
+namespace holebench {
+
+const char* to_string(MethodStatus status) {
+  switch (status) {
+    case MethodStatus::Ok:
+      return "ok";
+    case MethodStatus::Partial:
+      return "partial";
+    case MethodStatus::Failed:
+      return "failed";
+  }
+  return "unknown";
+}
+
+}  // namespace holebench

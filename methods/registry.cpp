@@ -1,0 +1,23 @@
+#include "methods/registry.h"
+
+#include "methods/liepa_cgal/liepa_cgal.h"
+
+#include <stdexcept>
+
+namespace holebench {
+
+std::vector<std::unique_ptr<Method>> make_all_methods() {
+  std::vector<std::unique_ptr<Method>> methods;
+  methods.push_back(std::make_unique<LiepaCgalMethod>());
+  return methods;
+}
+
+std::unique_ptr<Method> make_method(const std::string& id) {
+  for (auto& method : make_all_methods()) {
+    if (method->id() == id)
+      return std::move(method);
+  }
+  throw std::invalid_argument("unknown method '" + id + "' (see `holebench list`)");
+}
+
+}  // namespace holebench

@@ -1,0 +1,69 @@
+// An Embree 3 scene of a mesh's triangles, built once and queried many times: closest
+// points (rtcPointQuery) and ray casts (rtcIntersect1 / rtcOccluded1).
+//
+// Embree stores single-precision vertices for its BVH; this class keeps the triangles in
+// double precision and computes every distance and intersection parameter it returns in
+// double. Culling in the BVH is single precision (about 1e-7 of the coordinates' size).
+#pragma once
+
+#include "core/mesh.h"
+
+#include <array>
+#include <limits>
+#include <vector>
+
+struct RTCDeviceTy;
+struct RTCSceneTy;
+
+namespace holebench::embree {
+
+struct ClosestPoint {
+  Point point{0.0, 0.0, 0.0};
+  double distance = 0.0;
+  int face = -1;  ///< face index in the mesh the scene was built from
+};
+
+struct RayHit {
+  bool hit = false;
+  double distance = 0.0;  ///< ray parameter t (the direction is normalised)
+  int face = -1;
+  Point normal{0.0, 0.0, 0.0};  ///< unit geometric normal of the face hit (its orientation)
+};
+
+class TriangleScene {
+ public:
+  explicit TriangleScene(const Mesh& mesh);
+  ~TriangleScene();
+  TriangleScene(const TriangleScene&) = delete;
+  TriangleScene& operator=(const TriangleScene&) = delete;
+
+  /// The closest point of the mesh to `p`. Among faces at the same distance the one with
+  /// the smallest index wins, so the answer does not depend on the BVH's layout.
+  ClosestPoint closest_point(const Point& p) const;
+
+  /// The first face a ray from `origin` along `direction` hits within (t_near, t_far).
+  RayHit intersect(const Point& origin, const Point& direction, double t_near = 0.0,
+                   double t_far = std::numeric_limits<double>::infinity()) const;
+
+  /// Whether anything blocks the ray within (t_near, t_far).
+  bool occluded(const Point& origin, const Point& direction, double t_near = 0.0,
+                double t_far = std::numeric_limits<double>::infinity()) const;
+
+  /// The triangle of `face` (the mesh's face index) as three points.
+  const std::array<Point, 3>& triangle_of_face(int face) const;
+
+  std::size_t triangle_count() const { return triangles_.size(); }
+
+ private:
+  RTCDeviceTy* device_ = nullptr;
+  RTCSceneTy* scene_ = nullptr;
+  std::vector<std::array<Point, 3>> triangles_;  // by Embree primitive id
+  std::vector<int> face_of_primitive_;
+  std::vector<int> primitive_of_face_;
+};
+
+/// The closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision
+/// Detection, 5.1.5), in double precision.
+Point closest_point_on_triangle(const Point& p, const Point& a, const Point& b, const Point& c);
+
+}  // namespace holebench::embree

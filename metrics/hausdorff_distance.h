@@ -1,0 +1,58 @@
+// Two-sided Hausdorff distance between two triangle meshes, with a guaranteed error bound.
+//
+// Definition: h(A, B) = max over points a of A of min over points b of B |a - b|, and the
+// two-sided H(A, B) = max(h(A, B), h(B, A)). Both are computed over the surfaces (not
+// only the vertices) by branch and bound on the triangles of A:
+//  - a lower bound L is the largest distance found at any sampled point;
+//  - every triangle t of A has an upper bound U(t) >= max over t of d(x, B), the smaller of
+//    (i) max over t's corners of their distance to one single triangle T of B (distance
+//        to a triangle is convex, so its maximum over t is at a corner), and
+//    (ii) max over the corners of d(corner, B) + longest edge / sqrt(3) (every point of t
+//        lies within that of a corner, and d(., B) is 1-Lipschitz);
+//  - the triangle with the largest U is split in four until U <= L + error_bound.
+// The true value then lies in [lower, upper] with upper - lower <= error_bound (unless the
+// work limit stops the search first, which the result says). Ties between closest faces
+// are broken by face index, so the same inputs give the same numbers on every run.
+#pragma once
+
+#include "core/mesh.h"
+
+#include <cstddef>
+
+namespace holebench {
+
+namespace embree {
+class TriangleScene;
+}
+
+struct HausdorffOptions {
+  /// Absolute error bound, in model units (callers pass a fraction of the diagonal).
+  double error_bound = 1e-4;
+  /// Stop after this many closest-point queries per direction (then `converged` = false).
+  std::size_t max_queries = 20'000'000;
+};
+
+struct DirectedHausdorff {
+  double lower = 0.0;  ///< a distance attained at a point of A
+  double upper = 0.0;  ///< no point of A is farther from B than this
+  std::size_t queries = 0;
+  bool converged = true;
+};
+
+struct HausdorffResult {
+  DirectedHausdorff a_to_b;
+  DirectedHausdorff b_to_a;
+  double lower() const { return std::max(a_to_b.lower, b_to_a.lower); }
+  double upper() const { return std::max(a_to_b.upper, b_to_a.upper); }
+  bool converged() const { return a_to_b.converged && b_to_a.converged; }
+};
+
+/// h(A, B) with `b_scene` an Embree scene of B (reuse it across calls).
+DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
+                                     const HausdorffOptions& options = {});
+
+/// H(A, B): both directions.
+HausdorffResult hausdorff_distance(const Mesh& a, const Mesh& b,
+                                   const HausdorffOptions& options = {});
+
+}  // namespace holebench

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs every Debian package holebench needs. Idempotent; run as root
+# (or through sudo). Safe to run again: apt-get skips what is installed.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build ccache pkg-config git
+  # geometry and mesh libraries
+  libcgal-dev libcgal-demo libeigen3-dev libgmp-dev libmpfr-dev libboost-dev
+  libopenmesh-dev
+  libembree-dev libtbb-dev
+  # images (OpenImageIO's CMake targets name /usr/include/opencv4 and its tools)
+  libopenimageio-dev libopencv-core-dev openimageio-tools
+  # formatting, JSON, command line
+  libfmt-dev nlohmann-json3-dev libcli11-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev googletest libbenchmark-dev
+  # reports: plots
+  python3 python3-matplotlib
+  # formatting of the sources
+  clang-format
+)
+
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then exec sudo -E "$0" "$@"; fi
+  echo "setup.sh: run as root (apt-get needs it)" >&2
+  exit 1
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup.sh: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+echo "setup.sh: installing ${#missing[@]} packages: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup.sh: done"

@@ -1,0 +1,125 @@
+#include "metrics/hausdorff_distance.h"
+
+#include "core/geometry.h"
+#include "generators/box_holes.h"
+#include "generators/box_solid.h"
+#include "generators/case_catalog.h"
+#include "tests/test_meshes.h"
+
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iterator>
+
+namespace holebench {
+namespace {
+
+// The reference: CGAL's bounded-error symmetric Hausdorff distance, an independent
+// implementation (its own bounds, its own AABB tree).
+double cgal_hausdorff(const Mesh& a, const Mesh& b, double error_bound) {
+  return CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<
+      CGAL::Sequential_tag>(a, b, error_bound);
+}
+
+// Two results agree when their bound intervals overlap: ours is [lower, upper], CGAL's
+// value is within error_bound of the truth.
+void expect_agrees_with_cgal(const Mesh& a, const Mesh& b, double error_bound) {
+  HausdorffOptions options;
+  options.error_bound = error_bound;
+  const HausdorffResult ours = hausdorff_distance(a, b, options);
+  ASSERT_TRUE(ours.converged());
+  EXPECT_LE(ours.upper() - ours.lower(), error_bound);
+  const double reference = cgal_hausdorff(a, b, error_bound);
+  EXPECT_GE(reference, ours.lower() - error_bound);
+  EXPECT_LE(reference, ours.upper() + error_bound);
+}
+
+Mesh filled_without_refinement(const Mesh& holed) {
+  Mesh mesh = holed;
+  for (auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h))
+      continue;
+    std::vector<FaceHandle> faces;
+    CGAL::Polygon_mesh_processing::triangulate_hole(mesh, h, std::back_inserter(faces));
+  }
+  return mesh;
+}
+
+// A deterministic displacement of every vertex (no RNG library involved).
+Mesh displaced(const Mesh& mesh, double amplitude) {
+  Mesh out = mesh;
+  for (auto v : out.vertices()) {
+    const double phase = 0.7548776662 * v.idx();
+    out.point(v) +=
+        Point(std::sin(12.9898 * phase), std::sin(78.233 * phase), std::sin(37.719 * phase)) *
+        amplitude;
+  }
+  return out;
+}
+
+// Zero up to the rounding of the closest-point arithmetic (a few ulp of the coordinates).
+TEST(HausdorffDistance, IdenticalMeshesAreAtZero) {
+  const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  const auto result = hausdorff_distance(box, box);
+  EXPECT_LE(result.lower(), 1e-15);
+  EXPECT_LE(result.upper(), 1e-15);
+}
+
+// Analytic: a unit grid against itself lifted by 0.3 is exactly 0.3 away everywhere.
+TEST(HausdorffDistance, ParallelSquaresAtAKnownDistance) {
+  TriangleSoup lifted = test::grid_soup(3);
+  for (auto& p : lifted.points)
+    p[2] += 0.3;
+  const auto result = hausdorff_distance(build_mesh(test::grid_soup(3)), build_mesh(lifted));
+  EXPECT_NEAR(result.lower(), 0.3, 1e-12);
+  EXPECT_LE(result.upper(), 0.3 + 1e-4);
+}
+
+// Analytic one-sided distances: a 3x3 grid against its first two columns (x <= 2). The
+// farthest point of the full grid from the part is at x = 3: distance 1; the other way 0.
+TEST(HausdorffDistance, OneSidedDistancesDiffer) {
+  const Mesh full = build_mesh(test::grid_soup(3));
+  std::vector<std::pair<int, int>> right;
+  for (int j = 0; j < 3; ++j)
+    right.emplace_back(2, j);
+  const Mesh part = build_mesh(test::grid_without_cells(3, right));
+  const auto result = hausdorff_distance(full, part);
+  EXPECT_NEAR(result.a_to_b.lower, 1.0, 1e-12);  // the part spans x in [0, 2]
+  EXPECT_NEAR(result.b_to_a.lower, 0.0, 1e-12);
+}
+
+TEST(HausdorffDistance, AgreesWithCgalOnAPlanarHole) {
+  const Case c = generators::make_case("box/face_interior");
+  expect_agrees_with_cgal(filled_without_refinement(c.input), c.complete, 1e-3);
+}
+
+TEST(HausdorffDistance, AgreesWithCgalOnACornerHole) {
+  const Case c = generators::make_case("box/corner");
+  expect_agrees_with_cgal(filled_without_refinement(c.input), c.complete, 1e-3);
+}
+
+TEST(HausdorffDistance, AgreesWithCgalOnANoisyMesh) {
+  const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  expect_agrees_with_cgal(displaced(box, 0.01), box, 1e-4);
+}
+
+TEST(HausdorffDistance, AgreesWithCgalOnIdenticalMeshes) {
+  const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  expect_agrees_with_cgal(box, box, 1e-4);
+}
+
+TEST(HausdorffDistance, SameInputsGiveTheSameNumbers) {
+  const Case c = generators::make_case("box/corner");
+  const Mesh filled = filled_without_refinement(c.input);
+  const auto first = hausdorff_distance(filled, c.complete);
+  const auto second = hausdorff_distance(filled, c.complete);
+  EXPECT_EQ(first.lower(), second.lower());
+  EXPECT_EQ(first.upper(), second.upper());
+  EXPECT_EQ(first.a_to_b.queries, second.a_to_b.queries);
+}
+
+}  // namespace
+}  // namespace holebench

@@ -1,0 +1,52 @@
+// Tiny meshes made in code, shared by the tests.
+#pragma once
+
+#include "core/mesh_builder.h"
+
+namespace holebench::test {
+
+/// A regular tetrahedron-like closed mesh, outward oriented.
+inline TriangleSoup tetrahedron_soup() {
+  TriangleSoup soup;
+  soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+  soup.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  return soup;
+}
+
+/// An n x n grid of unit squares in the plane z = 0, two triangles each, normal +z.
+/// Vertex (i, j) has index j * (n + 1) + i.
+inline TriangleSoup grid_soup(int n) {
+  TriangleSoup soup;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i)
+      soup.points.emplace_back(i, j, 0.0);
+  }
+  auto index = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      soup.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+      soup.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  }
+  return soup;
+}
+
+/// The grid without the triangles of the cells listed (cell (i, j) = triangles 2(jn+i)
+/// and 2(jn+i)+1).
+inline TriangleSoup grid_without_cells(int n, const std::vector<std::pair<int, int>>& cells) {
+  TriangleSoup full = grid_soup(n);
+  std::vector<char> removed(full.triangles.size(), 0);
+  for (auto [i, j] : cells) {
+    removed[2 * (j * n + i)] = 1;
+    removed[2 * (j * n + i) + 1] = 1;
+  }
+  TriangleSoup soup;
+  soup.points = full.points;
+  for (std::size_t t = 0; t < full.triangles.size(); ++t) {
+    if (!removed[t])
+      soup.triangles.push_back(full.triangles[t]);
+  }
+  return soup;
+}
+
+}  // namespace holebench::test
