@@ -3,8 +3,10 @@
 
 #include "core/boundary_loops.h"
 
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+// CGAL's graph traits for OpenMesh must come before any CGAL algorithm header.
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <chrono>
 #include <iterator>

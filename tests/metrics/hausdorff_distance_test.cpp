@@ -6,9 +6,11 @@
 #include "generators/case_catalog.h"
 #include "tests/test_meshes.h"
 
+// CGAL's graph traits for OpenMesh must come before any CGAL algorithm header.
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
