@@ -41,12 +41,14 @@ Case make_box_hole_case(const BoxHoleOptions& options) {
       // The centre of the +z face (region 5).
       center = Point(0.5 * s[0], 0.5 * s[1], s[2]);
       labels.k = 1;
+      labels.regions = {5};
       hole_size = 2.0 * options.radius;
       break;
     case BoxHoleTarget::Edge: {
       // The middle of the convex edge between +y (region 3) and +z (region 5), along x.
       center = Point(0.5 * s[0], s[1], s[2]);
       labels.k = 2;
+      labels.regions = {3, 5};
       labels.transitions = {Convexity::Convex, Convexity::Convex};
       truth.missing_edges.push_back({Point(center[0] - options.radius, s[1], s[2]),
                                      Point(center[0] + options.radius, s[1], s[2])});
@@ -57,6 +59,7 @@ Case make_box_hole_case(const BoxHoleOptions& options) {
       // The corner (size) where +x, +y and +z meet; its three edges are convex.
       center = s;
       labels.k = 3;
+      labels.regions = {1, 3, 5};
       labels.transitions = {Convexity::Convex, Convexity::Convex, Convexity::Convex};
       for (int axis = 0; axis < 3; ++axis) {
         Point end = s;
@@ -69,6 +72,8 @@ Case make_box_hole_case(const BoxHoleOptions& options) {
     }
   }
   labels.orientation = Orientation::Inner;
+  labels.size = hole_size;
+  labels.structure_size = options.structure_size;
   labels.expected_decision =
       hole_size < options.structure_size ? Decision::CloseAutomatically : Decision::Guide;
   truth.labels = labels;

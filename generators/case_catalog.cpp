@@ -1,52 +1,194 @@
 #include "generators/case_catalog.h"
 
+#include "core/errors.h"
+#include "core/geometry.h"
 #include "generators/box_holes.h"
+#include "generators/brep/brep_cases.h"
+#include "generators/procedural_solids.h"
+#include "generators/punched_case.h"
+#include "generators/random.h"
+#include "generators/vertex_noise.h"
 
+#include <fmt/format.h>
+
+#include <functional>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 namespace holebench::generators {
+
+const std::vector<SizeClass>& punch_size_classes() {
+  static const std::vector<SizeClass> sizes = {{"small", 0.02}, {"large", 0.08}};
+  return sizes;
+}
+
 namespace {
 
-struct CatalogEntry {
-  CaseDescriptor descriptor;
-  BoxHoleTarget target;
-};
+constexpr double kStructureSizeRelDiag = 0.06;
 
-const std::vector<CatalogEntry>& catalog() {
-  static const std::vector<CatalogEntry> entries = {
-      {{"box/face_interior", "box", "face_interior",
-        "box, hole in the interior of the +z face (k = 1, inner)"},
-       BoxHoleTarget::FaceInterior},
-      {{"box/edge", "box", "edge", "box, hole across the convex edge +y/+z (k = 2, inner)"},
-       BoxHoleTarget::Edge},
-      {{"box/corner", "box", "corner", "box, hole at the convex corner +x/+y/+z (k = 3, inner)"},
-       BoxHoleTarget::Corner},
-  };
-  return entries;
+std::shared_ptr<const AnalysedModel> procedural_model(const std::string& name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& model = cache[name];
+  if (!model) model = std::make_shared<const AnalysedModel>(analyse_model(name, make_procedural_solid(name)));
+  return model;
 }
 
 }  // namespace
 
-std::vector<CaseDescriptor> list_cases() {
-  std::vector<CaseDescriptor> descriptors;
-  for (const auto& entry : catalog())
-    descriptors.push_back(entry.descriptor);
-  return descriptors;
+struct CaseCatalog::State {
+  CatalogOptions options;
+  mutable std::once_flag listed;
+  mutable std::vector<CaseDescriptor> descriptors;
+  mutable std::vector<SkippedModel> skipped;
+  void add(CaseDescriptor descriptor) const { descriptors.push_back(std::move(descriptor)); }
+
+  static Case make_punched(const AnalysedModel& model, const PunchTarget& target, const SizeClass& size,
+                           const std::string& id, const std::string& family) {
+    PunchedCaseOptions options;
+    options.radius_rel_diag = size.radius_rel_diag;
+    options.structure_size_rel_diag = kStructureSizeRelDiag;
+    options.shape_seed = stable_hash(id);
+    Case c = make_punched_case(model, target, options);
+    c.id = id;
+    c.family = family;
+    return c;
+  }
+
+  // Every target of a model at every size class.
+  void add_punched(const std::string& family, const std::string& name,
+                   std::function<std::shared_ptr<const AnalysedModel>()> load) const {
+    std::shared_ptr<const AnalysedModel> model;
+    try {
+      model = load();
+    } catch (const std::exception& e) {
+      skipped.push_back({family + "/" + name, e.what()});
+      return;
+    }
+    for (const auto& target : find_punch_targets(*model)) {
+      for (const auto& size : punch_size_classes()) {
+        const std::string id = fmt::format("{}/{}/{}/{}", family, name, target.kind, size.name);
+        add({id, family, target.kind,
+             fmt::format("{} {}, {} hole ({} % of the diagonal)", family, name, target.kind,
+                         100.0 * size.radius_rel_diag)});
+      }
+    }
+  }
+
+  // The loader of the model a punched id names, without listing the other families.
+  std::function<std::shared_ptr<const AnalysedModel>()> loader(const std::string& family,
+                                                              const std::string& name) const {
+    if (family == "solid") {
+      for (const auto& solid : procedural_solid_names()) {
+        if (solid == name) return [name] { return procedural_model(name); };
+      }
+    }
+    std::vector<CadModelSource> sources;
+    if (family == "cad" && options.include_cad) sources = cgal_cad_models(options.cad_data_dir);
+    if (family == "file") sources = user_mesh_sources(options.user_meshes);
+    for (const auto& source : sources) {
+      if (source.name == name) return [source, this] { return prepare_cad_model(source, options.prepare); };
+    }
+    return nullptr;
+  }
+
+  // Makes a case from its id alone: only the model it names is loaded.
+  Case make_direct(const std::string& id) const {
+    std::vector<std::string> parts;
+    for (std::size_t start = 0;;) {
+      const auto slash = id.find('/', start);
+      parts.push_back(id.substr(start, slash - start));
+      if (slash == std::string::npos) break;
+      start = slash + 1;
+    }
+    const std::string& family = parts[0];
+    if (family == "box" && parts.size() == 2) {
+      for (auto target : {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
+        if (parts[1] != to_string(target)) continue;
+        BoxHoleOptions box;
+        box.target = target;
+        return make_box_hole_case(box);
+      }
+    }
+    if (family == "brep") return make_brep_case(id);
+    if (parts.size() == 4) {
+      if (auto load = loader(family, parts[1])) {
+        const auto model = load();  // throws InvalidInputError for an unusable model
+        for (const auto& target : find_punch_targets(*model)) {
+          if (target.kind != parts[2]) continue;
+          for (const auto& size : punch_size_classes()) {
+            if (size.name == parts[3]) return make_punched(*model, target, size, id, family);
+          }
+        }
+      }
+    }
+    throw std::invalid_argument("unknown case id '" + id + "' (see `holebench cases list`)");
+  }
+
+  void build() const {
+    for (auto target : {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
+      const std::string kind = to_string(target);
+      add({"box/" + kind, "box", kind, fmt::format("box, the skeleton's {} hole", kind)});
+    }
+    for (const auto& descriptor : list_brep_cases()) {
+      add(descriptor);
+    }
+    for (const auto& name : procedural_solid_names()) add_punched("solid", name, loader("solid", name));
+    if (options.include_cad) {
+      for (const auto& source : cgal_cad_models(options.cad_data_dir)) {
+        add_punched("cad", source.name, loader("cad", source.name));
+      }
+    }
+    for (const auto& source : user_mesh_sources(options.user_meshes)) {
+      add_punched("file", source.name, loader("file", source.name));
+    }
+  }
+};
+
+CaseCatalog::CaseCatalog(CatalogOptions options) : state_(std::make_unique<State>()) {
+  state_->options = std::move(options);
 }
 
-Case make_case(const std::string& id, std::uint64_t seed) {
-  for (const auto& entry : catalog()) {
-    if (entry.descriptor.id != id)
-      continue;
-    BoxHoleOptions options;
-    options.target = entry.target;
-    Case result = make_box_hole_case(options);
-    // The skeleton's cases have no random element yet; the seed is recorded so that
-    // noisy families keep the same contract (same id and seed, same bytes).
-    result.seed = seed;
-    return result;
-  }
-  throw std::invalid_argument("unknown case id '" + id + "' (see `holebench list`)");
+CaseCatalog::~CaseCatalog() = default;
+
+const std::vector<CaseDescriptor>& CaseCatalog::cases() const {
+  std::call_once(state_->listed, [this] { state_->build(); });
+  return state_->descriptors;
+}
+
+const std::vector<SkippedModel>& CaseCatalog::skipped() const {
+  cases();
+  return state_->skipped;
+}
+
+Case CaseCatalog::make(const std::string& id, std::uint64_t seed, double noise_percent) const {
+  if (!(noise_percent >= 0.0)) throw std::invalid_argument("the noise level must be >= 0");
+  // Making a case never needs the whole list: only the model its id names is loaded.
+  Case c = state_->make_direct(id);
+  c.id = id;
+  c.seed = seed;
+  c.noise_percent = noise_percent;
+  NoiseOptions noise;
+  noise.percent = noise_percent;
+  noise.reference_length = noise_reference_length(c.complete);
+  noise.seed = stable_hash(id) ^ (0x9e3779b97f4a7c15ull * (seed + 1));
+  add_vertex_noise(c.input, noise);
+  return c;
+}
+
+namespace {
+const CaseCatalog& default_catalog() {
+  static const CaseCatalog catalog;
+  return catalog;
+}
+}  // namespace
+
+std::vector<CaseDescriptor> list_cases() { return default_catalog().cases(); }
+
+Case make_case(const std::string& id, std::uint64_t seed, double noise_percent) {
+  return default_catalog().make(id, seed, noise_percent);
 }
 
 }  // namespace holebench::generators

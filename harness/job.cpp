@@ -14,7 +14,7 @@
 namespace holebench::harness {
 
 std::string Job::id() const {
-  return fmt::format("{}|{}|{}", case_id, method_id, seed);
+  return fmt::format("{}|{}|{}|{}", case_id, method_id, noise_percent, seed);
 }
 
 const char* to_string(JobStatus status) {
@@ -88,10 +88,10 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
   record.job = job;
   Case c;
   try {
-    c = generators::make_case(job.case_id, job.seed);
+    c = options.catalog ? options.catalog->make(job.case_id, job.seed, job.noise_percent)
+                        : generators::make_case(job.case_id, job.seed, job.noise_percent);
     record.case_family = c.family;
     record.case_kind = c.kind;
-    record.noise_percent = c.noise_percent;
   } catch (const std::exception& e) {
     record.status = JobStatus::InvalidInput;
     record.message = e.what();

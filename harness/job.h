@@ -1,6 +1,7 @@
 // One job: a case x a method x a seed, and the record it produces.
 #pragma once
 
+#include "generators/case_catalog.h"
 #include "methods/method.h"
 #include "metrics/evaluation.h"
 
@@ -14,9 +15,10 @@ namespace holebench::harness {
 struct Job {
   std::string case_id;
   std::string method_id;
+  double noise_percent = 0.0;  ///< vertex noise of the input, % of 1 % of the diagonal
   std::uint64_t seed = 0;
 
-  /// Stable key used to match records across runs: "case_id|method_id|seed".
+  /// Stable key used to match records across runs: "case_id|method_id|noise|seed".
   std::string id() const;
 };
 
@@ -42,7 +44,6 @@ struct JobRecord {
   Job job;
   std::string case_family;
   std::string case_kind;
-  double noise_percent = 0.0;
   std::string user = "no_user";
   int user_interventions = 0;
   JobStatus status = JobStatus::Ok;
@@ -55,6 +56,7 @@ struct JobRecord {
 };
 
 struct JobOptions {
+  const generators::CaseCatalog* catalog = nullptr;  ///< nullptr: the default catalog
   EvaluationOptions evaluation;
   std::filesystem::path snapshot_dir;  ///< empty: no snapshot
 };

@@ -1,46 +1,95 @@
 // holebench: the command line of the benchmark.
 #include "generators/case_catalog.h"
+#include "harness/case_export.h"
+#include "harness/case_selection.h"
 #include "harness/run_command.h"
 #include "methods/registry.h"
 
-#include <fmt/format.h>
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include <cstdio>
 #include <exception>
 
 namespace {
 
-int list_command() {
-  fmt::print("cases:\n");
-  for (const auto& c : holebench::generators::list_cases()) {
-    fmt::print("  {:<24} {}\n", c.id, c.description);
+using holebench::generators::CaseCatalog;
+using holebench::generators::CatalogOptions;
+
+void print_skipped(const CaseCatalog& catalog) {
+  for (const auto& skipped : catalog.skipped()) {
+    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
+                 skipped.reason.c_str());
   }
-  fmt::print("methods:\n");
-  for (const auto& m : holebench::make_all_methods()) {
-    fmt::print("  {:<24} {}\n", m->id(), m->description());
+}
+
+std::string labels_text(const holebench::Case& c) {
+  std::string text;
+  for (const auto& hole : c.holes) {
+    if (!hole.labels) continue;
+    const auto& l = *hole.labels;
+    std::string transitions;
+    for (auto t : l.transitions) transitions += std::string(transitions.empty() ? "" : ",") + to_string(t);
+    text += fmt::format("k={} {} [{}] {}", l.k, to_string(l.orientation), transitions,
+                        to_string(l.expected_decision));
   }
+  return text;
+}
+
+int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patterns, bool labels) {
+  const auto selected =
+      holebench::harness::select_cases(catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
+  for (const auto& c : selected) {
+    std::string extra;
+    if (labels) extra = "  " + labels_text(catalog.make(c.id));
+    fmt::print("{:<48} {}{}\n", c.id, c.description, extra);
+  }
+  print_skipped(catalog);
+  std::fprintf(stderr, "%zu cases\n", selected.size());
+  return 0;
+}
+
+int cases_export(const CaseCatalog& catalog, const std::vector<std::string>& patterns,
+                 const std::filesystem::path& dir, double noise, std::uint64_t seed) {
+  const auto selected =
+      holebench::harness::select_cases(catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
+  for (std::size_t i = 0; i < selected.size(); ++i) {
+    const auto c = catalog.make(selected[i].id, seed, noise);
+    holebench::harness::export_case(c, dir / holebench::harness::case_folder_name(c.id));
+    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, selected.size(), c.id.c_str());
+  }
+  print_skipped(catalog);
   return 0;
 }
 
 void print_summary_table(const holebench::harness::RunSummary& summary) {
-  fmt::print("\n| case | method | status | hausdorff (rel. diag) | new faces | time (s) |\n");
-  fmt::print("|---|---|---|---:|---:|---:|\n");
+  fmt::print("\n| case | method | noise % | status | hausdorff (rel. diag) | new faces | time (ms) |\n");
+  fmt::print("|---|---|---:|---|---:|---:|---:|\n");
   for (const auto& r : summary.records) {
     auto metric = [&](const char* name) {
       for (const auto& m : r.metrics) {
-        if (m.name == name)
-          return fmt::format("{:.3g}", m.value);
+        if (m.name == name) return fmt::format("{:.3g}", m.value);
       }
       return std::string("-");
     };
-    fmt::print("| {} | {} | {} | {} | {} | {:.2f} |\n", r.job.case_id, r.job.method_id,
-               holebench::harness::to_string(r.status), metric("hausdorff_rel_diag"),
-               metric("new_faces_count"), r.method_seconds);
+    fmt::print("| {} | {} | {} | {} | {} | {} | {:.1f} |\n", r.job.case_id, r.job.method_id,
+               r.job.noise_percent, holebench::harness::to_string(r.status),
+               metric("hausdorff_rel_diag"), metric("new_faces_count"), 1000.0 * r.method_seconds);
   }
   fmt::print("\n{} jobs, {} not ok, {:.1f} s. Results: {} and {}\n", summary.records.size(),
              summary.failures, summary.seconds, summary.results_json.string(),
              summary.results_csv.string());
+}
+
+void add_catalog_options(CLI::App* command, CatalogOptions& catalog, bool& no_cad) {
+  command->add_option("--mesh", catalog.user_meshes,
+                      "Your own mesh file or folder (OFF/OBJ/STL/PLY), punched like the CAD "
+                      "models; repeatable. Its cases are file/<stem>/...")
+      ->check(CLI::ExistingPath);
+  command->add_flag("--no-cad", no_cad, "Leave out the CGAL data set's CAD models (faster listing)");
+  command->add_option("--cad-dir", catalog.cad_data_dir,
+                      "Folder with the CGAL data set's meshes (default: extracted by the build; "
+                      "or $HOLEBENCH_CAD_DIR)");
 }
 
 }  // namespace
@@ -49,31 +98,75 @@ int main(int argc, char** argv) {
   CLI::App app{
       "holebench: a benchmark and evaluation harness for hole filling on CAD meshes.\n"
       "Generates holed cases with ground truth, runs hole-filling methods on them,\n"
-      "measures the results and writes records, tables and pictures."};
+      "measures the results and writes records, tables and pictures.\n"
+      "Case ids and patterns: '*' matches anything, e.g. 'brep/k3/*' or 'cad/fandisk/*'."};
   app.require_subcommand(1);
 
-  auto* list = app.add_subcommand("list", "List the cases and the methods");
+  auto* list = app.add_subcommand("list", "List the methods and the case families");
+  (void)list;
+
+  CatalogOptions catalog_options;
+  bool no_cad = false;
+  auto* cases = app.add_subcommand("cases", "List or export cases");
+  cases->require_subcommand(1);
+  std::vector<std::string> case_patterns;
+  bool with_labels = false;
+  auto* cases_list_cmd = cases->add_subcommand("list", "List cases (optionally matching patterns)");
+  cases_list_cmd->add_option("patterns", case_patterns, "Case ids or patterns (default: all)");
+  cases_list_cmd->add_flag("--labels", with_labels, "Generate each case and print its labels");
+  add_catalog_options(cases_list_cmd, catalog_options, no_cad);
+  std::filesystem::path export_dir;
+  double export_noise = 0.0;
+  std::uint64_t export_seed = 0;
+  auto* cases_export_cmd =
+      cases->add_subcommand("export", "Write cases as PLY/OFF meshes and JSON ground truth");
+  cases_export_cmd->add_option("dir", export_dir, "Output folder")->required();
+  cases_export_cmd->add_option("patterns", case_patterns, "Case ids or patterns (default: all)");
+  cases_export_cmd->add_option("--noise", export_noise, "Noise level in % of 1 % of the diagonal")
+      ->check(CLI::NonNegativeNumber);
+  cases_export_cmd->add_option("--seed", export_seed, "Noise seed");
+  add_catalog_options(cases_export_cmd, catalog_options, no_cad);
 
   holebench::harness::RunOptions run_options;
-  auto* run = app.add_subcommand("run", "Run cases x methods and write results to a folder");
+  auto* run = app.add_subcommand("run", "Run cases x methods x noise x seeds into a folder");
   run->add_option("--out", run_options.out_dir, "Output folder (created if missing)")->required();
-  run->add_option("--case", run_options.case_ids, "Case id to run (repeatable; default: all)");
-  run->add_option("--method", run_options.method_ids,
-                  "Method id to run (repeatable; default: all)");
-  run->add_option("--seed", run_options.seeds, "Seed (repeatable; default: 0)");
+  run->add_option("--case", run_options.case_patterns,
+                  "Case id or pattern, repeatable (default: box/*, brep/*, solid/*/small)");
+  run->add_option("--method", run_options.method_ids, "Method id, repeatable (default: all)");
+  run->add_option("--noise", run_options.noise_levels,
+                  "Noise level in % of 1 % of the diagonal, repeatable (default: 0)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--seed", run_options.seeds, "Seed, repeatable (default: 0)");
   bool no_snapshots = false;
   run->add_flag("--no-snapshots", no_snapshots, "Do not render a PNG per job");
   run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
                   "Error bound of the Hausdorff distance, relative to the diagonal")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  add_catalog_options(run, run_options.catalog, no_cad);
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (list->parsed())
-      return list_command();
+    if (list->parsed()) {
+      fmt::print("methods:\n");
+      for (const auto& m : holebench::make_all_methods()) fmt::print("  {:<16} {}\n", m->id(), m->description());
+      fmt::print(
+          "case families (see `holebench cases list`):\n"
+          "  box/<target>                  the walking skeleton's box holes\n"
+          "  brep/...                      synthetic planar B-Rep cases, k <= 3 and variants\n"
+          "  solid/<name>/<target>/<size>  holes in procedural solids\n"
+          "  cad/<model>/<target>/<size>   holes in CGAL's CAD meshes\n"
+          "  file/<stem>/<target>/<size>   holes in your own meshes (--mesh)\n");
+      return 0;
+    }
+    catalog_options.include_cad = !no_cad;
+    if (cases_list_cmd->parsed()) return cases_list(CaseCatalog(catalog_options), case_patterns, with_labels);
+    if (cases_export_cmd->parsed()) {
+      return cases_export(CaseCatalog(catalog_options), case_patterns, export_dir, export_noise, export_seed);
+    }
     if (run->parsed()) {
       run_options.snapshots = !no_snapshots;
+      run_options.catalog.include_cad = !no_cad;
       const auto summary = holebench::harness::run_jobs(run_options);
       print_summary_table(summary);
       return 0;

@@ -70,7 +70,7 @@ nlohmann::ordered_json to_json(const JobRecord& record) {
   j["seed"] = record.job.seed;
   j["case_family"] = record.case_family;
   j["case_kind"] = record.case_kind;
-  j["noise_percent"] = record.noise_percent;
+  j["noise_percent"] = record.job.noise_percent;
   j["user"] = record.user;
   j["user_interventions"] = record.user_interventions;
   j["status"] = to_string(record.status);
@@ -137,7 +137,7 @@ void write_results_csv(const std::filesystem::path& path, const std::vector<JobR
     const std::string prefix = fmt::format(
         "{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
         csv_field(record.job.method_id), record.job.seed, csv_field(record.case_family),
-        csv_field(record.case_kind), record.noise_percent, to_string(record.status));
+        csv_field(record.case_kind), record.job.noise_percent, to_string(record.status));
     if (record.metrics.empty())
       out << prefix << ",,\n";
     // fmt's "{}" is the shortest text that reads back to the same double.

@@ -1,6 +1,7 @@
 #include "harness/run_command.h"
 
 #include "generators/case_catalog.h"
+#include "harness/case_selection.h"
 #include "harness/results_file.h"
 #include "methods/registry.h"
 
@@ -12,34 +13,21 @@
 
 namespace holebench::harness {
 
-std::vector<Job> plan_jobs(const RunOptions& options) {
-  std::vector<std::string> cases = options.case_ids;
-  if (cases.empty()) {
-    for (const auto& descriptor : generators::list_cases())
-      cases.push_back(descriptor.id);
-  } else {
-    const auto known = generators::list_cases();
-    for (const auto& id : cases) {
-      bool found = false;
-      for (const auto& descriptor : known)
-        found = found || descriptor.id == id;
-      if (!found)
-        throw std::invalid_argument("unknown case id '" + id + "' (see `holebench list`)");
-    }
-  }
+std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog) {
+  const auto cases = select_cases(
+      catalog, options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
   std::vector<std::string> methods = options.method_ids;
   if (methods.empty()) {
-    for (const auto& method : make_all_methods())
-      methods.push_back(method->id());
+    for (const auto& method : make_all_methods()) methods.push_back(method->id());
   } else {
-    for (const auto& id : methods)
-      make_method(id);  // throws for an unknown id
+    for (const auto& id : methods) make_method(id);  // throws for an unknown id
   }
   std::vector<Job> jobs;
-  for (const auto& case_id : cases) {
+  for (const auto& c : cases) {
     for (const auto& method_id : methods) {
-      for (auto seed : options.seeds)
-        jobs.push_back({case_id, method_id, seed});
+      for (double noise : options.noise_levels) {
+        for (auto seed : options.seeds) jobs.push_back({c.id, method_id, noise, seed});
+      }
     }
   }
   return jobs;
@@ -47,9 +35,11 @@ std::vector<Job> plan_jobs(const RunOptions& options) {
 
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<Job> jobs = plan_jobs(options);
+  const generators::CaseCatalog catalog(options.catalog);
+  const std::vector<Job> jobs = plan_jobs(options, catalog);
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;
+  job_options.catalog = &catalog;
   job_options.evaluation = options.evaluation;
   if (options.snapshots) {
     job_options.snapshot_dir = options.out_dir / "snapshots";
@@ -65,7 +55,7 @@ RunSummary run_jobs(const RunOptions& options) {
     if (options.progress) {
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - job_start).count();
-      std::fprintf(stderr, "[%zu/%zu] %-40s %-8s %.2fs%s%s\n", i + 1, jobs.size(),
+      std::fprintf(stderr, "[%zu/%zu] %-56s %-8s %.2fs%s%s\n", i + 1, jobs.size(),
                    jobs[i].id().c_str(), to_string(record.status), seconds,
                    record.message.empty() ? "" : "  ", record.message.c_str());
     }

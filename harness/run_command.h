@@ -11,9 +11,12 @@ namespace holebench::harness {
 
 struct RunOptions {
   std::filesystem::path out_dir;
-  std::vector<std::string> case_ids;    ///< empty: every case of the catalog
+  /// Case ids or wildcard patterns ('*', '?'); empty: default_case_patterns().
+  std::vector<std::string> case_patterns;
   std::vector<std::string> method_ids;  ///< empty: every method
+  std::vector<double> noise_levels{0.0};  ///< % of 1 % of the diagonal
   std::vector<std::uint64_t> seeds{0};
+  generators::CatalogOptions catalog;
   bool snapshots = true;
   bool progress = true;  ///< a line per job on stderr
   EvaluationOptions evaluation;
@@ -27,9 +30,9 @@ struct RunSummary {
   std::filesystem::path results_csv;
 };
 
-/// The jobs of `options`, in a fixed order (case, then method, then seed). Throws
-/// std::invalid_argument for an unknown case or method id.
-std::vector<Job> plan_jobs(const RunOptions& options);
+/// The jobs of `options` over `catalog`, in a fixed order (case, method, noise, seed).
+/// Throws std::invalid_argument for an unknown case or method id.
+std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog);
 
 /// Runs the jobs one after another and writes results.json, results.csv and snapshots/
 /// into `options.out_dir`.

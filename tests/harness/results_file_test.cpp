@@ -11,7 +11,7 @@ namespace {
 
 JobRecord sample_record() {
   JobRecord record;
-  record.job = {"box/edge", "liepa_cgal", 3};
+  record.job = {"box/edge", "liepa_cgal", 5.0, 3};
   record.case_family = "box";
   record.case_kind = "edge";
   record.status = JobStatus::Partial;
@@ -29,7 +29,8 @@ TEST(ResultsFile, JsonKeepsNumbersAsNumbersAndExact) {
   EXPECT_EQ(json["context"]["suite"], "unit");
   EXPECT_EQ(json["context"]["schema_version"], kResultsSchemaVersion);
   const auto& record = json["results"][0];
-  EXPECT_EQ(record["job_id"], "box/edge|liepa_cgal|3");
+  EXPECT_EQ(record["job_id"], "box/edge|liepa_cgal|5|3");
+  EXPECT_EQ(record["noise_percent"], 5.0);
   EXPECT_EQ(record["status"], "partial");
   EXPECT_EQ(record["seed"], 3);
   EXPECT_EQ(record["metrics"]["hausdorff_rel_diag"].get<double>(), 0.046358123456789012);

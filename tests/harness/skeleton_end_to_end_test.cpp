@@ -28,6 +28,8 @@ double metric(const JobRecord& record, const std::string& name) {
 TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
   RunOptions options;
   options.out_dir = fresh_dir("skeleton");
+  options.case_patterns = {"box/*"};
+  options.catalog.include_cad = false;
   options.progress = false;
   const RunSummary summary = run_jobs(options);
   ASSERT_EQ(summary.records.size(), 3u);
@@ -81,7 +83,8 @@ TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
 
 TEST(SkeletonEndToEnd, SameInputsGiveTheSameRecords) {
   RunOptions options;
-  options.case_ids = {"box/corner"};
+  options.case_patterns = {"box/corner"};
+  options.catalog.include_cad = false;
   options.snapshots = false;
   options.progress = false;
   options.out_dir = fresh_dir("repeat_a");
@@ -99,15 +102,17 @@ TEST(SkeletonEndToEnd, SameInputsGiveTheSameRecords) {
 TEST(SkeletonEndToEnd, UnknownCaseOrMethodIsRejectedBeforeRunning) {
   RunOptions options;
   options.out_dir = fresh_dir("unknown");
-  options.case_ids = {"no/such/case"};
-  EXPECT_THROW(plan_jobs(options), std::invalid_argument);
-  options.case_ids = {};
+  options.catalog.include_cad = false;
+  const generators::CaseCatalog catalog(options.catalog);
+  options.case_patterns = {"no/such/case"};
+  EXPECT_THROW(plan_jobs(options, catalog), std::invalid_argument);
+  options.case_patterns = {"box/*"};
   options.method_ids = {"no_such_method"};
-  EXPECT_THROW(plan_jobs(options), std::invalid_argument);
+  EXPECT_THROW(plan_jobs(options, catalog), std::invalid_argument);
 }
 
 TEST(RunJob, AnUnknownCaseBecomesAnInvalidInputRecordNotACrash) {
-  const JobRecord record = run_job({"no/such/case", "liepa_cgal", 0}, {});
+  const JobRecord record = run_job({"no/such/case", "liepa_cgal", 0.0, 0}, {});
   EXPECT_EQ(record.status, JobStatus::InvalidInput);
   EXPECT_NE(record.message.find("no/such/case"), std::string::npos);
 }

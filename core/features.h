@@ -1,0 +1,48 @@
+// Sharp features of a segmented mesh: sharp edges classified convex or reflex, chained
+// into polylines, and corners (vertices where three or more regions meet) with the
+// convexity signature of their sharp edges.
+#pragma once
+
+#include "core/case.h"
+#include "core/mesh.h"
+#include "core/region_segmentation.h"
+
+#include <string>
+#include <vector>
+
+namespace holebench {
+
+struct SharpEdgeChain {
+  std::vector<VertexHandle> vertices;  ///< in order along the chain
+  std::vector<EdgeHandle> edges;       ///< edges[i] joins vertices[i] and vertices[i + 1]
+  Convexity convexity = Convexity::Convex;  ///< the convexity of (most of) its edges
+  bool closed = false;                      ///< the chain is a loop
+  int regions[2] = {kNoRegion, kNoRegion};  ///< the two regions it separates
+  double length = 0.0;
+};
+
+struct Corner {
+  VertexHandle vertex;
+  std::vector<Convexity> edge_convexity;  ///< per incident sharp edge, sorted convex first
+  /// "c" per convex and "r" per reflex sharp edge, convex first: "ccc", "ccr", "crr", ...
+  std::string signature() const;
+};
+
+struct FeatureOptions {
+  SegmentationOptions segmentation;  ///< regions and sharp edges come from this
+};
+
+struct FeatureAnalysis {
+  SegmentationResult segmentation;
+  std::vector<char> edge_is_sharp;        ///< per edge index
+  std::vector<Convexity> edge_convexity;  ///< per edge index (meaningful where sharp)
+  std::vector<SharpEdgeChain> chains;
+  std::vector<Corner> corners;
+};
+
+/// Segments `mesh` into regions and analyses its sharp edges and corners. Chains run between
+/// corners (vertices with other than two incident sharp edges) or close on themselves; a
+/// chain never changes region pair. Deterministic.
+FeatureAnalysis analyse_features(const Mesh& mesh, const FeatureOptions& options = {});
+
+}  // namespace holebench

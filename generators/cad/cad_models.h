@@ -1,0 +1,44 @@
+// The real CAD meshes: CGAL's data set (Debian package libcgal-demo, CC0) and a user's own
+// mesh files, prepared for punching (closed check, isotropic remeshing, segmentation).
+#pragma once
+
+#include "generators/punch_targets.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace holebench::generators {
+
+struct CadModelSource {
+  std::string name;  ///< e.g. "fandisk"; for user files the file stem
+  std::filesystem::path path;
+  std::string credit;
+};
+
+/// The folder with the CGAL data set's meshes: $HOLEBENCH_CAD_DIR if set, else the folder
+/// the build extracted them to (from /usr/share/doc/libcgal-dev/data.tar.gz).
+std::filesystem::path default_cad_data_dir();
+
+/// The CGAL data set's CAD models holebench uses, in a fixed order (whether or not the
+/// files exist: a missing one is reported when it is prepared).
+std::vector<CadModelSource> cgal_cad_models(const std::filesystem::path& data_dir);
+
+/// Mesh files named by a user: files (OFF, OBJ, STL, PLY) or folders (every such file in
+/// it, sorted by name).
+std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem::path>& paths);
+
+struct PrepareOptions {
+  double target_edge_length_rel_diag = 0.01;  ///< remeshing target, relative to the diagonal
+  double sharp_angle_degrees = 30.0;
+};
+
+/// Reads, checks (closed: holes are punched into complete models) and remeshes a model,
+/// then segments it and finds its features. Throws InvalidInputError with the reason for a
+/// missing, open, non-manifold or degenerate mesh. Results are cached per path for the
+/// process, so listing and making cases analyse each model once.
+std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& source,
+                                                       const PrepareOptions& options = {});
+
+}  // namespace holebench::generators

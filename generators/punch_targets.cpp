@@ -1,0 +1,200 @@
+#include "generators/punch_targets.h"
+
+#include "core/geometry.h"
+#include "core/plane_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <set>
+
+namespace holebench::generators {
+
+AnalysedModel analyse_model(std::string name, Mesh mesh, const FeatureOptions& options) {
+  AnalysedModel model;
+  model.name = std::move(name);
+  model.features = analyse_features(mesh, options);
+  assign_regions(mesh, model.features.segmentation);
+  model.diagonal = bounding_box_diagonal(mesh);
+  const auto planes = fit_region_planes(mesh);
+  model.region_is_planar.resize(planes.size());
+  for (std::size_t r = 0; r < planes.size(); ++r) {
+    model.region_is_planar[r] = planes[r].valid && planes[r].plane.rms_residual < 1e-6 * model.diagonal;
+  }
+  model.mesh = std::move(mesh);
+  return model;
+}
+
+namespace {
+
+bool is_apex(const Mesh& mesh, VertexHandle v);
+
+// Graph distance (along edges) from every vertex to the nearest vertex on a sharp edge or
+// at an apex.
+std::vector<double> distance_to_sharp_edges(const AnalysedModel& model) {
+  const Mesh& mesh = model.mesh;
+  std::vector<double> distance(mesh.n_vertices(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (auto e : mesh.edges()) {
+    if (!model.features.edge_is_sharp[e.idx()]) continue;
+    for (auto v : {e.v0(), e.v1()}) {
+      if (distance[v.idx()] == 0.0) continue;
+      distance[v.idx()] = 0.0;
+      queue.push({0.0, v.idx()});
+    }
+  }
+  for (auto v : mesh.vertices()) {
+    if (distance[v.idx()] != 0.0 && is_apex(mesh, v)) {
+      distance[v.idx()] = 0.0;
+      queue.push({0.0, v.idx()});
+    }
+  }
+  while (!queue.empty()) {
+    const auto [d, index] = queue.top();
+    queue.pop();
+    if (d > distance[index]) continue;
+    const auto v = mesh.vertex_handle(index);
+    for (auto h : mesh.voh_range(v)) {
+      const auto w = mesh.to_vertex_handle(h);
+      const double nd = d + mesh.calc_edge_length(h);
+      if (nd < distance[w.idx()]) {
+        distance[w.idx()] = nd;
+        queue.push({nd, w.idx()});
+      }
+    }
+  }
+  return distance;
+}
+
+// The region of a vertex whose faces all lie in one region, or kNoRegion.
+int single_region(const Mesh& mesh, VertexHandle v) {
+  int id = kNoRegion;
+  for (auto f : mesh.vf_range(v)) {
+    if (id == kNoRegion) id = region(mesh, f);
+    if (region(mesh, f) != id) return kNoRegion;
+  }
+  return id;
+}
+
+// Whether the normals of the faces around `v` spread over more than 90 degrees: a point
+// where a smooth region comes to a tip (a cone's apex).
+bool is_apex(const Mesh& mesh, VertexHandle v) {
+  for (auto f : mesh.vf_range(v)) {
+    for (auto g : mesh.vf_range(v)) {
+      if (OpenMesh::dot(face_normal(mesh, f), face_normal(mesh, g)) < 0.0) return true;
+    }
+  }
+  return false;
+}
+
+VertexHandle farthest_interior_vertex(const AnalysedModel& model, const std::vector<double>& distance,
+                                      bool planar) {
+  VertexHandle best;
+  double best_distance = 0.0;
+  for (auto v : model.mesh.vertices()) {
+    const int id = single_region(model.mesh, v);
+    if (id == kNoRegion || static_cast<bool>(model.region_is_planar[id]) != planar) continue;
+    if (!planar && is_apex(model.mesh, v)) continue;
+    if (std::isfinite(distance[v.idx()]) && distance[v.idx()] > best_distance) {
+      best_distance = distance[v.idx()];
+      best = v;
+    }
+  }
+  return best;
+}
+
+VertexHandle chain_middle(const Mesh& mesh, const SharpEdgeChain& chain) {
+  double walked = 0.0;
+  for (std::size_t i = 0; i < chain.edges.size(); ++i) {
+    walked += mesh.calc_edge_length(chain.edges[i]);
+    if (walked >= 0.5 * chain.length) return chain.vertices[i + 1];
+  }
+  return chain.vertices.front();
+}
+
+VertexHandle cone_apex(const AnalysedModel& model) {
+  const Mesh& mesh = model.mesh;
+  for (auto v : mesh.vertices()) {
+    const int id = single_region(mesh, v);
+    if (id == kNoRegion || model.region_is_planar[id]) continue;
+    if (is_apex(mesh, v)) return v;
+  }
+  return VertexHandle();
+}
+
+// Two chains that share no end vertex, at their closest approach (a few percent of the
+// diagonal at most): the vertex nearest the midpoint of the closest pair.
+PunchTarget multi_feature_target(const AnalysedModel& model) {
+  const Mesh& mesh = model.mesh;
+  const auto& chains = model.features.chains;
+  double best = 0.08 * model.diagonal;
+  Point midpoint;
+  bool found = false;
+  for (std::size_t a = 0; a < chains.size(); ++a) {
+    for (std::size_t b = a + 1; b < chains.size(); ++b) {
+      const std::set<int> ends{chains[a].vertices.front().idx(), chains[a].vertices.back().idx()};
+      if (ends.count(chains[b].vertices.front().idx()) || ends.count(chains[b].vertices.back().idx())) continue;
+      for (auto va : chains[a].vertices) {
+        for (auto vb : chains[b].vertices) {
+          const double d = (mesh.point(va) - mesh.point(vb)).norm();
+          if (d > 0.0 && d < best) {
+            best = d;
+            midpoint = (mesh.point(va) + mesh.point(vb)) * 0.5;
+            found = true;
+          }
+        }
+      }
+    }
+  }
+  if (!found) return {};
+  VertexHandle nearest;
+  double nearest_distance = std::numeric_limits<double>::infinity();
+  for (auto v : mesh.vertices()) {
+    const double d = (mesh.point(v) - midpoint).norm();
+    if (d < nearest_distance) {
+      nearest_distance = d;
+      nearest = v;
+    }
+  }
+  // Large enough to reach both chains from the midpoint.
+  return {"multi_feature", nearest, 0.75 * best};
+}
+
+}  // namespace
+
+std::vector<PunchTarget> find_punch_targets(const AnalysedModel& model) {
+  std::vector<PunchTarget> targets;
+  const auto distance = distance_to_sharp_edges(model);
+  const VertexHandle planar = farthest_interior_vertex(model, distance, true);
+  if (planar.is_valid()) targets.push_back({"face_interior", planar});
+
+  for (Convexity convexity : {Convexity::Convex, Convexity::Reflex}) {
+    const SharpEdgeChain* longest = nullptr;
+    for (const auto& chain : model.features.chains) {
+      if (chain.convexity == convexity && (!longest || chain.length > longest->length)) longest = &chain;
+    }
+    if (longest) {
+      targets.push_back({std::string("edge_") + to_string(convexity), chain_middle(model.mesh, *longest)});
+    }
+  }
+
+  std::set<std::string> signatures;
+  for (const auto& corner : model.features.corners) {
+    const std::string signature = corner.signature();
+    if (!signatures.insert(signature).second) continue;
+    targets.push_back({"corner_" + signature, corner.vertex});
+  }
+
+  const PunchTarget multi = multi_feature_target(model);
+  if (multi.vertex.is_valid()) targets.push_back(multi);
+  const VertexHandle curved = farthest_interior_vertex(model, distance, false);
+  if (curved.is_valid()) targets.push_back({"curved_face", curved});
+  const VertexHandle apex = cone_apex(model);
+  if (apex.is_valid()) targets.push_back({"cone_apex", apex});
+  if (planar.is_valid()) targets.push_back({"island", planar});
+  return targets;
+}
+
+}  // namespace holebench::generators

@@ -1,0 +1,46 @@
+// Where to punch holes into a complete, segmented model: one target per kind of feature
+// the model has (CASES.md, "Holes in real CAD meshes").
+#pragma once
+
+#include "core/features.h"
+#include "core/mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace holebench::generators {
+
+/// A complete model ready for punching: its mesh (region ids set by segmentation) and its
+/// features.
+struct AnalysedModel {
+  std::string name;
+  Mesh mesh;
+  FeatureAnalysis features;
+  double diagonal = 0.0;
+  std::vector<char> region_is_planar;  ///< per region: plane fit residual below 1e-6 diag
+};
+
+/// Segments `mesh`, assigns its region ids and analyses its features.
+AnalysedModel analyse_model(std::string name, Mesh mesh, const FeatureOptions& options = {});
+
+struct PunchTarget {
+  /// "face_interior", "edge_convex", "edge_reflex", "corner_<signature>" (e.g.
+  /// "corner_ccr"), "multi_feature", "curved_face", "cone_apex", "island".
+  std::string kind;
+  VertexHandle vertex;  ///< the hole's centre: a vertex of the complete mesh
+  double min_radius = 0.0;  ///< the hole must be at least this large to reach its features
+};
+
+/// One target of each kind the model has, in a fixed order, chosen deterministically:
+/// - face_interior: the vertex of a planar region farthest from any sharp edge;
+/// - edge_convex / edge_reflex: the middle vertex of the longest chain of that convexity;
+/// - corner_<signature>: the first corner (by vertex index) with that signature;
+/// - multi_feature: a vertex near which two sharp-edge chains that share no corner come
+///   closest (one hole across several features);
+/// - curved_face: the vertex of a non-planar region farthest from its sharp edges;
+/// - cone_apex: a vertex of a non-planar region where all its faces meet at a point whose
+///   faces' normals spread over more than 90 degrees (a cone's apex);
+/// - island: like face_interior (an annulus is removed there, its inside kept).
+std::vector<PunchTarget> find_punch_targets(const AnalysedModel& model);
+
+}  // namespace holebench::generators

@@ -1,0 +1,29 @@
+// A case made by punching one hole into a complete, analysed model, with its ground truth.
+#pragma once
+
+#include "core/case.h"
+#include "generators/punch_targets.h"
+
+#include <cstdint>
+#include <string>
+
+namespace holebench::generators {
+
+struct PunchedCaseOptions {
+  double radius_rel_diag = 0.02;    ///< hole radius, relative to the model's diagonal
+  double irregularity = 0.25;       ///< radius varies by up to this fraction around the hole
+  double island_ratio = 0.45;       ///< island: inner radius / outer radius
+  double structure_size_rel_diag = 0.04;  ///< delta_s for the expected decision
+  std::uint64_t shape_seed = 0;     ///< phases of the irregular boundary
+  bool keep_input_regions = false;  ///< false: the input has no region ids (a real scan)
+};
+
+/// Removes the faces around `target` (an irregular disc on the surface, grown only through
+/// faces connected to the target, so that thin parts are not cut through; an annulus for
+/// "island") and records the ground truth: removed faces, missing sharp edges as polylines
+/// (sharp edges with both faces removed), missing corners (corners with every face
+/// removed), and the labels of CASES.md where the hole runs along planar regions only.
+Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
+                       const PunchedCaseOptions& options);
+
+}  // namespace holebench::generators

@@ -1,0 +1,56 @@
+#include "harness/case_selection.h"
+
+#include <stdexcept>
+
+namespace holebench::harness {
+
+bool wildcard_match(const std::string& pattern, const std::string& text) {
+  // Iterative matching with one backtrack point for the last '*'.
+  std::size_t p = 0, t = 0, star = std::string::npos, mark = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
+      ++p;
+      ++t;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      mark = t;
+    } else if (star != std::string::npos) {
+      p = star + 1;
+      t = ++mark;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
+                                                     const std::vector<std::string>& patterns) {
+  const auto& all = catalog.cases();
+  std::vector<char> chosen(all.size(), 0);
+  for (const auto& pattern : patterns) {
+    bool any = false;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (wildcard_match(pattern, all[i].id)) {
+        chosen[i] = 1;
+        any = true;
+      }
+    }
+    if (!any) {
+      throw std::invalid_argument("no case matches '" + pattern + "' (see `holebench cases list`)");
+    }
+  }
+  std::vector<generators::CaseDescriptor> selected;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (chosen[i]) selected.push_back(all[i]);
+  }
+  return selected;
+}
+
+const std::vector<std::string>& default_case_patterns() {
+  static const std::vector<std::string> patterns = {"box/*", "brep/*", "solid/*/small"};
+  return patterns;
+}
+
+}  // namespace holebench::harness

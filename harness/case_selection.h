@@ -1,0 +1,24 @@
+// Selecting cases by id patterns: '*' matches any run of characters (also '/'), '?' one.
+#pragma once
+
+#include "generators/case_catalog.h"
+
+#include <string>
+#include <vector>
+
+namespace holebench::harness {
+
+/// Whether `text` matches the wildcard `pattern` as a whole.
+bool wildcard_match(const std::string& pattern, const std::string& text);
+
+/// The catalog's cases matching any of `patterns`, in catalog order. An exact id or a
+/// pattern that matches nothing is an error (std::invalid_argument), so that a typo never
+/// silently runs nothing.
+std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
+                                                     const std::vector<std::string>& patterns);
+
+/// The default suite of `holebench run` (until named suites exist): the skeleton's box
+/// holes, every synthetic B-Rep case, and the small holes of the procedural solids.
+const std::vector<std::string>& default_case_patterns();
+
+}  // namespace holebench::harness
