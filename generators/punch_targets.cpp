@@ -193,7 +193,13 @@ std::vector<PunchTarget> find_punch_targets(const AnalysedModel& model) {
   if (curved.is_valid()) targets.push_back({"curved_face", curved});
   const VertexHandle apex = cone_apex(model);
   if (apex.is_valid()) targets.push_back({"cone_apex", apex});
-  if (planar.is_valid()) targets.push_back({"island", planar});
+  if (planar.is_valid()) {
+    // An island needs room: its inside must keep whole triangles, so the hole spans several
+    // edge lengths whatever the size class.
+    double length = 0.0;
+    for (auto e : model.mesh.edges()) length += model.mesh.calc_edge_length(e);
+    targets.push_back({"island", planar, 8.0 * length / model.mesh.n_edges()});
+  }
   return targets;
 }
 

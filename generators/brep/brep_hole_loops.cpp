@@ -8,7 +8,9 @@ namespace holebench::generators::brep {
 namespace {
 
 using Key = std::array<double, 3>;
-Key key_of(const Point& p) { return {p[0], p[1], p[2]}; }
+Key key_of(const Point& p) {
+  return {p[0], p[1], p[2]};
+}
 
 }  // namespace
 
@@ -82,8 +84,7 @@ std::vector<BrepHoleLoop> brep_hole_loops(const PolyhedronTopology& topology,
         // transition T); the kept face's edge into T, w -> T, is shared with the next face.
         const LoopEdge into = topology.previous(edges[last_of_visit[v]]);
         const auto across = topology.twin(into);
-        if (!across || removed[across->face] ||
-            across->face != loop.regions[(v + 1) % k])
+        if (!across || removed[across->face] || across->face != loop.regions[(v + 1) % k])
           throw std::logic_error("brep_hole_loops: a transition passes through a third face");
         loop.transitions.push_back(topology.convexity(into));
         loop.transition_points.push_back(topology.to(into));

@@ -21,7 +21,7 @@ struct BrepHoleLoop {
   /// vertex where the loop passes from one to the other.
   std::vector<Convexity> transitions;
   std::vector<Point> transition_points;  ///< the transition vertices, same order
-  std::vector<Point> points;  ///< the loop's polygon vertices, in loop order
+  std::vector<Point> points;             ///< the loop's polygon vertices, in loop order
   /// Faces whose boundary the loop touches that are removed.
   std::vector<int> adjacent_removed_faces;
 };

@@ -16,8 +16,9 @@ struct FaceInfo {
   int nesting_level = -1;
 };
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-using FaceBase = CGAL::Triangulation_face_base_with_info_2<
-    FaceInfo, Kernel, CGAL::Constrained_triangulation_face_base_2<Kernel>>;
+using FaceBase =
+    CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel,
+                                              CGAL::Constrained_triangulation_face_base_2<Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 

@@ -12,7 +12,9 @@ namespace {
 
 using Key = std::array<double, 3>;
 
-Key key_of(const Point& p) { return {p[0], p[1], p[2]}; }
+Key key_of(const Point& p) {
+  return {p[0], p[1], p[2]};
+}
 
 // Twice the signed area of a loop about `normal` (Newell's method).
 Point newell(const std::vector<Point>& loop) {
@@ -136,8 +138,8 @@ void tessellate_face(const PlanarFace& face, int region_id, const TessellationOp
   }
 
   for (const auto& triangle : triangulate_domain(domain)) {
-    soup.triangles.push_back(
-        {pool.at(points3[triangle[0]]), pool.at(points3[triangle[1]]), pool.at(points3[triangle[2]])});
+    soup.triangles.push_back({pool.at(points3[triangle[0]]), pool.at(points3[triangle[1]]),
+                              pool.at(points3[triangle[2]])});
     soup.regions.push_back(region_id);
   }
 }
@@ -207,21 +209,32 @@ Convexity PolyhedronTopology::convexity(const LoopEdge& edge) const {
   if (!other)
     throw std::logic_error("polyhedron: convexity of an edge without twin");
   const Point axis = to(edge) - from(edge);
-  const double sine = OpenMesh::dot(OpenMesh::cross(normals_[edge.face], normals_[other->face]), axis);
+  const double sine =
+      OpenMesh::dot(OpenMesh::cross(normals_[edge.face], normals_[other->face]), axis);
   return sine > 0.0 ? Convexity::Convex : Convexity::Reflex;
 }
 
-std::vector<int> PolyhedronTopology::faces_around(const Point& vertex) const {
+std::vector<Point> PolyhedronTopology::vertices() const {
+  std::vector<Point> points;
+  for (const auto& [key, edge] : edges_) {
+    if (points.empty() || key_of(points.back()) != key.first)
+      points.push_back(from(edge));
+  }
+  return points;
+}
+
+std::vector<LoopEdge> PolyhedronTopology::edges_around(const Point& vertex) const {
   // The first outgoing edge in key order; then rotate: the face holding P -> R, where
   // R -> P is the current face's edge into the vertex, is the next one counter-clockwise.
-  auto it = edges_.lower_bound(std::make_pair(key_of(vertex), Key{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}));
+  auto it =
+      edges_.lower_bound(std::make_pair(key_of(vertex), Key{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}));
   if (it == edges_.end() || it->first.first != key_of(vertex))
     throw std::logic_error("polyhedron: not a vertex");
   const LoopEdge start = it->second;
-  std::vector<int> faces;
+  std::vector<LoopEdge> faces;
   LoopEdge edge = start;
   for (std::size_t guard = 0; guard <= polyhedron_.faces.size() * 4; ++guard) {
-    faces.push_back(edge.face);
+    faces.push_back(edge);
     const auto next_edge = twin(previous(edge));
     if (!next_edge)
       throw std::logic_error("polyhedron: vertex on an open boundary");

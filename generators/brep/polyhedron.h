@@ -18,9 +18,7 @@ struct PlanarFace {
   std::vector<std::vector<Point>> inner;  ///< holes in the face, clockwise seen from outside
 
   /// Loop 0 is the outer loop, loop i > 0 the inner loop i - 1.
-  const std::vector<Point>& loop(int index) const {
-    return index == 0 ? outer : inner[index - 1];
-  }
+  const std::vector<Point>& loop(int index) const { return index == 0 ? outer : inner[index - 1]; }
   int loop_count() const { return 1 + static_cast<int>(inner.size()); }
 };
 
@@ -61,10 +59,15 @@ class PolyhedronTopology {
   /// Convexity of a shared edge, from the two faces' plane normals: convex where
   /// (n_face x n_twin) . (to - from) > 0. \pre The edge has a twin.
   Convexity convexity(const LoopEdge& edge) const;
-  /// The faces around a vertex, counter-clockwise about the outward normal (the order in
-  /// which a boundary loop around a small hole at the vertex visits them).
+  /// The edges out of a vertex, one per face around it, counter-clockwise about the outward
+  /// normal (the order in which a boundary loop around a small hole at the vertex visits
+  /// the faces). The edge between face i and face i + 1 is `previous(edges[i])`.
   /// \pre `vertex` is a polygon vertex of the closed part of the polyhedron.
-  std::vector<int> faces_around(const Point& vertex) const;
+  std::vector<LoopEdge> edges_around(const Point& vertex) const;
+  /// The unit normal of face `face`.
+  const Point& normal(int face) const { return normals_[face]; }
+  /// Every distinct polygon vertex, in key order.
+  std::vector<Point> vertices() const;
   const Polyhedron& polyhedron() const { return polyhedron_; }
 
  private:

@@ -104,7 +104,8 @@ void extract_faces(const SideGrid& grid, double cell, Polyhedron& polyhedron) {
         return grid.at(a, b) && component[b * grid.width + a] == count;
       };
       for (const auto& s : squares) {
-        const Corner c[4] = {{s[0], s[1]}, {s[0] + 1, s[1]}, {s[0] + 1, s[1] + 1}, {s[0], s[1] + 1}};
+        const Corner c[4] = {
+            {s[0], s[1]}, {s[0] + 1, s[1]}, {s[0] + 1, s[1] + 1}, {s[0], s[1] + 1}};
         const Corner across[4] = {
             {s[0], s[1] - 1}, {s[0] + 1, s[1]}, {s[0], s[1] + 1}, {s[0] - 1, s[1]}};
         for (int e = 0; e < 4; ++e) {

@@ -1,0 +1,36 @@
+// The planar models the synthetic B-Rep cases are cut from (model units; the structure
+// size of the cases is 1).
+#pragma once
+
+#include "generators/brep/polyhedron.h"
+
+namespace holebench::generators::brep {
+
+Polyhedron make_box_model();             ///< [0,6]^3
+Polyhedron make_corner_notch_model();    ///< [0,10]^3 minus [5,10]^3
+Polyhedron make_block_on_plate_model();  ///< plate [0,10]^2 x [0,2], block [3,7]^2 x [2,6]
+/// Plate [0,10]^2 x [0,5] with a block [0,4]^2 x [5,9] on its corner (a convex-reflex-reflex
+/// vertex whose three faces have outer boundaries only).
+Polyhedron make_corner_block_model();
+/// An L profile: base [0,6]^2 x [0,2] and wall [0,6] x [0,2] x [2,6]; a reflex valley edge.
+Polyhedron make_valley_model();
+Polyhedron make_pocket_model();    ///< plate [0,10]^2 x [0,3], pocket [3,7]^2 x [1,3]
+Polyhedron make_l_pocket_model();  ///< plate with an L-shaped pocket (a convex inner corner)
+Polyhedron make_l_boss_model();    ///< plate with an L-shaped block (a reflex inner corner)
+/// Plate with a pocket in front of a block, a tunnel through the block at the pocket's
+/// rim: the plate top and the pocket's back wall both have the tunnel mouth on an inner
+/// boundary.
+Polyhedron make_tunnel_model();
+/// Plate with a pocket in front of a block and a bridge across the pocket's top.
+Polyhedron make_bridge_model();
+/// A block half over a pocket: the plate top meets the vertical face in front twice along
+/// one line, once reflex (at the block) and once convex (at the pocket's rim).
+Polyhedron make_twisted_model();
+/// A step: lower top z = 3 (y > 5), riser y = 5, upper top z = 6 (y < 5).
+Polyhedron make_step_model();
+/// A prism over an equilateral triangle of side 4, length 8 along x.
+Polyhedron make_triangular_prism_model();
+/// A pyramid over a regular n-gon (circumradius 6), apex at height 6.
+Polyhedron make_pyramid_model(int sides);
+
+}  // namespace holebench::generators::brep
