@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
+#include "harness/render/case_view.h"
 #include "harness/render/snapshot.h"
 #include "methods/registry.h"
 
@@ -34,45 +35,6 @@ const char* to_string(JobStatus status) {
 }
 
 namespace {
-
-// The view of a case: along the area-weighted mean normal of the removed faces in the
-// complete model, tilted a little so that edges and depth read in the picture. It uses
-// ground truth, which the harness may; it is the same for every method of the case.
-render::Camera case_camera(const Case& c) {
-  Point normal(0, 0, 0);
-  Point centroid(0, 0, 0);
-  double area = 0.0;
-  for (const auto& hole : c.holes) {
-    for (int index : hole.removed_faces) {
-      const FaceHandle f = c.complete.face_handle(index);
-      const double a = face_area(c.complete, f);
-      normal += face_normal(c.complete, f) * a;
-      centroid += face_centroid(c.complete, f) * a;
-      area += a;
-    }
-  }
-  if (area == 0.0 || normal.norm() == 0.0) {
-    normal = Point(1, 1, 1);
-    centroid = bounding_box(c.complete).center();
-  } else {
-    centroid /= area;
-  }
-  normal /= normal.norm();
-  // Enough context around the hole to read it, never more than the whole model.
-  double extent = 0.0;
-  for (const auto& hole : c.holes) {
-    for (int index : hole.removed_faces) {
-      extent = std::max(
-          extent, (face_centroid(c.complete, c.complete.face_handle(index)) - centroid).norm());
-    }
-  }
-  const BoundingBox box = bounding_box(c.complete);
-  const double radius = std::min(0.55 * box.diagonal() + (box.center() - centroid).norm(),
-                                 std::max(3.0 * extent, 0.3 * box.diagonal()));
-  const Point tilt = Point(0.35, -0.45, 0.3);
-  const Point direction = -(normal + tilt * 0.6);
-  return render::frame_sphere(centroid, radius, direction);
-}
 
 void copy_holes(const MethodResult& result, JobRecord& record) {
   for (const auto& hole : result.holes) {
@@ -124,7 +86,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
           ch = '_';
       }
       const auto path = options.snapshot_dir / (name + ".png");
-      render::write_png(render::render_snapshot(result.repaired, case_camera(c)), path);
+      render::write_png(render::render_snapshot(result.repaired, render::hole_camera(c)), path);
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
     }
   } catch (const InvalidInputError& e) {

@@ -1,6 +1,7 @@
 // holebench: the command line of the benchmark.
 #include "generators/case_catalog.h"
 #include "harness/case_export.h"
+#include "harness/case_gallery.h"
 #include "harness/case_selection.h"
 #include "harness/run_command.h"
 #include "methods/registry.h"
@@ -23,25 +24,12 @@ void print_skipped(const CaseCatalog& catalog) {
   }
 }
 
-std::string labels_text(const holebench::Case& c) {
-  std::string text;
-  for (const auto& hole : c.holes) {
-    if (!hole.labels) continue;
-    const auto& l = *hole.labels;
-    std::string transitions;
-    for (auto t : l.transitions) transitions += std::string(transitions.empty() ? "" : ",") + to_string(t);
-    text += fmt::format("k={} {} [{}] {}", l.k, to_string(l.orientation), transitions,
-                        to_string(l.expected_decision));
-  }
-  return text;
-}
-
 int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patterns, bool labels) {
   const auto selected =
       holebench::harness::select_cases(catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
   for (const auto& c : selected) {
     std::string extra;
-    if (labels) extra = "  " + labels_text(catalog.make(c.id));
+    if (labels) extra = "  " + holebench::harness::labels_summary(catalog.make(c.id));
     fmt::print("{:<48} {}{}\n", c.id, c.description, extra);
   }
   print_skipped(catalog);
@@ -103,7 +91,6 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   auto* list = app.add_subcommand("list", "List the methods and the case families");
-  (void)list;
 
   CatalogOptions catalog_options;
   bool no_cad = false;
@@ -126,6 +113,13 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   cases_export_cmd->add_option("--seed", export_seed, "Noise seed");
   add_catalog_options(cases_export_cmd, catalog_options, no_cad);
+
+  std::filesystem::path gallery_dir;
+  auto* cases_gallery_cmd = cases->add_subcommand(
+      "gallery", "Render one picture per case (figure-5 style) and a gallery.html page");
+  cases_gallery_cmd->add_option("dir", gallery_dir, "Output folder")->required();
+  cases_gallery_cmd->add_option("patterns", case_patterns, "Case ids or patterns (default: brep/*)");
+  add_catalog_options(cases_gallery_cmd, catalog_options, no_cad);
 
   holebench::harness::RunOptions run_options;
   auto* run = app.add_subcommand("run", "Run cases x methods x noise x seeds into a folder");
@@ -163,6 +157,14 @@ int main(int argc, char** argv) {
     if (cases_list_cmd->parsed()) return cases_list(CaseCatalog(catalog_options), case_patterns, with_labels);
     if (cases_export_cmd->parsed()) {
       return cases_export(CaseCatalog(catalog_options), case_patterns, export_dir, export_noise, export_seed);
+    }
+    if (cases_gallery_cmd->parsed()) {
+      const CaseCatalog catalog(catalog_options);
+      const auto selected = holebench::harness::select_cases(
+          catalog, case_patterns.empty() ? std::vector<std::string>{"brep/*"} : case_patterns);
+      const auto page = holebench::harness::write_case_gallery(catalog, selected, gallery_dir);
+      fmt::print("{}\n", page.string());
+      return 0;
     }
     if (run->parsed()) {
       run_options.snapshots = !no_snapshots;

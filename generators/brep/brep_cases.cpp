@@ -484,7 +484,7 @@ std::vector<Recipe> make_recipes() {
   // Inner holes: a ball around a face point (k = 1), an edge point (k = 2), a vertex (k = 3).
   r.push_back(ball("k1/inner", "face_interior", "k1/inner", make_box_model, {3, 3, 6}, Target::Face,
                    "box, face interior", 0.25, 1.0));
-  r.push_back(ball("k2/inner/convex", "edge", "k2/inner/convex", make_box_model, {3, 0, 6},
+  r.push_back(ball("k2/inner/convex", "edge", "k2/inner/convex", make_box_model, {3.5, 0, 6},
                    Target::Edge, "box, convex edge"));
   r.push_back(ball("k2/inner/reflex", "edge", "k2/inner/reflex", make_corner_notch_model,
                    {5, 5, 7.5}, Target::Edge, "corner notch, reflex edge"));
@@ -515,27 +515,6 @@ std::vector<Recipe> make_recipes() {
   r.push_back(removal("k2/outer/reflex/inner-outer", "faces", "k2/outer/reflex/inner-outer",
                       make_block_on_plate_model, {{5, 5, 6}, {3, 5, 4}, {7, 5, 4}, {5, 7, 4}},
                       false, "block on a plate: top and three walls removed"));
-  const std::vector<Point> plate_shell = {{0.5, 0.5, 3}, {0, 5, 1},  {10, 5, 1},
-                                          {5, 0, 1},     {5, 10, 1}, {5, 5, 0}};
-  {
-    auto keep = plate_shell;
-    keep.push_back({3, 4, 2});
-    r.push_back(removal("k2/outer/convex/inner-inner", "faces", "k2/outer/convex/inner-inner",
-                        make_tunnel_model, keep, true,
-                        "tunnel at a pocket's rim: only the plate top, the wall with the "
-                        "tunnel mouth and the plate's outside kept"));
-    r.back().weak_spot = "multiple_inner_boundaries";
-    r.push_back(removal("k2/outer/reflex/inner-inner", "faces", "k2/outer/reflex/inner-inner",
-                        make_bridge_model, keep, true,
-                        "bridge over a pocket in front of a block: only the plate top, the "
-                        "block front with the bridge's end and the plate's outside kept"));
-    r.back().weak_spot = "multiple_inner_boundaries";
-    keep.push_back({4, 5, 4});
-    r.push_back(removal("k3/outer/convex-convex-reflex/inner-inner-outer", "faces",
-                        "k3/outer/convex-convex-reflex/inner-inner-outer", make_tunnel_model, keep,
-                        true, "tunnel at a pocket's rim, one tunnel wall kept"));
-    r.back().weak_spot = "multiple_inner_boundaries";
-  }
   // k = 3, every face on its outer boundary: the three faces at a vertex kept.
   r.push_back(removal("k3/outer/convex-convex-convex/outer-outer-outer", "faces",
                       "k3/outer/convex-convex-convex/outer-outer-outer", make_box_model,
@@ -556,7 +535,7 @@ std::vector<Recipe> make_recipes() {
   // k = 3, one face on its inner boundary: a pocket or a block with two adjacent walls kept.
   r.push_back(removal("k3/outer/convex-convex-convex/inner-outer-outer", "faces",
                       "k3/outer/convex-convex-convex/inner-outer-outer", make_l_pocket_model,
-                      {{5, 5, 1}, {2, 4, 2}, {4, 2, 2}, {8, 3, 2}, {3, 8, 2}}, false,
+                      {{3, 3, 1}, {2, 4, 2}, {4, 2, 2}, {8, 3, 2}, {3, 8, 2}}, false,
                       "L-shaped pocket: floor and all walls but the two at its convex inner "
                       "corner removed"));
   r.push_back(removal("k3/outer/convex-convex-reflex/inner-outer-outer", "faces",

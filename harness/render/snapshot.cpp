@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace holebench::render {
 
@@ -53,41 +54,109 @@ Camera frame_sphere(const Point& target, double radius, const Point& direction,
   return camera;
 }
 
-Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options) {
+namespace {
+
+// The camera's frame and projection.
+struct View {
+  Point eye, forward, right, up;
+  double half_width, half_height;
+  int width, height;
+
+  View(const Camera& camera, int w, int h) : width(w), height(h) {
+    forward = camera.direction / camera.direction.norm();
+    // "up" is +z unless the camera looks along z.
+    const Point up_hint = std::abs(forward[2]) < 0.95 ? Point(0, 0, 1) : Point(0, 1, 0);
+    right = OpenMesh::cross(forward, up_hint);
+    right /= right.norm();
+    up = OpenMesh::cross(right, forward);
+    eye = camera.target - forward * camera.distance;
+    half_height = std::tan(0.5 * camera.field_of_view_degrees * M_PI / 180.0);
+    half_width = half_height * w / h;
+  }
+
+  Point ray(double x, double y) const {
+    const double u = (x / width * 2.0 - 1.0) * half_width;
+    const double v = (1.0 - y / height * 2.0) * half_height;
+    return forward + right * u + up * v;
+  }
+
+  // Pixel coordinates and distance from the eye; false behind the camera.
+  bool project(const Point& p, double& x, double& y, double& depth) const {
+    const Point d = p - eye;
+    const double z = OpenMesh::dot(d, forward);
+    if (z <= 1e-12) return false;
+    x = (OpenMesh::dot(d, right) / z / half_width + 1.0) * 0.5 * width;
+    y = (1.0 - OpenMesh::dot(d, up) / z / half_height) * 0.5 * height;
+    depth = d.norm();
+    return true;
+  }
+};
+
+void paint_disc(Image& image, const std::vector<double>& depth, double tolerance, double x, double y,
+                double point_depth, float radius, const Rgb& colour) {
+  const int r = static_cast<int>(std::ceil(radius));
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const int px = static_cast<int>(std::floor(x)) + dx;
+      const int py = static_cast<int>(std::floor(y)) + dy;
+      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+      if (dx * dx + dy * dy > radius * radius) continue;
+      if (point_depth > depth[static_cast<std::size_t>(py) * image.width + px] + tolerance) continue;
+      image.set(px, py, colour);
+    }
+  }
+}
+
+void draw_overlay(Image& image, const View& view, const std::vector<double>& depth, double tolerance,
+                  const Overlay& overlay) {
+  for (const auto& line : overlay.lines) {
+    double xa, ya, da, xb, yb, db;
+    if (!view.project(line.a, xa, ya, da) || !view.project(line.b, xb, yb, db)) continue;
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::hypot(xb - xa, yb - ya))));
+    for (int i = 0; i <= steps; ++i) {
+      const double t = static_cast<double>(i) / steps;
+      double x, y, d;
+      if (!view.project(line.a + (line.b - line.a) * t, x, y, d)) continue;
+      paint_disc(image, depth, tolerance, x, y, d, 0.5f * line.width_px, line.colour);
+    }
+  }
+  for (const auto& dot : overlay.dots) {
+    double x, y, d;
+    if (view.project(dot.p, x, y, d)) paint_disc(image, depth, tolerance, x, y, d, dot.radius_px, dot.colour);
+  }
+}
+
+}  // namespace
+
+Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options,
+                      const Overlay& overlay) {
   const embree::TriangleScene scene(mesh);
   Image image(options.width, options.height);
-  const Point forward = camera.direction / camera.direction.norm();
-  // A right/up frame; "up" is +z unless the camera looks along z.
-  Point up_hint = std::abs(forward[2]) < 0.95 ? Point(0, 0, 1) : Point(0, 1, 0);
-  Point right = OpenMesh::cross(forward, up_hint);
-  right /= right.norm();
-  const Point up = OpenMesh::cross(right, forward);
-  const Point eye = camera.target - forward * camera.distance;
-  const double half_height = std::tan(0.5 * camera.field_of_view_degrees * M_PI / 180.0);
-  const double half_width = half_height * options.width / options.height;
+  const View view(camera, options.width, options.height);
   const int n = std::max(1, options.samples_per_axis);
+  std::vector<double> depth(static_cast<std::size_t>(options.width) * options.height,
+                            std::numeric_limits<double>::infinity());
 
   for (int y = 0; y < options.height; ++y) {
     for (int x = 0; x < options.width; ++x) {
       Rgb sum;
       for (int sy = 0; sy < n; ++sy) {
         for (int sx = 0; sx < n; ++sx) {
-          const double u = ((x + (sx + 0.5) / n) / options.width * 2.0 - 1.0) * half_width;
-          const double v = (1.0 - (y + (sy + 0.5) / n) / options.height * 2.0) * half_height;
-          const Point direction = forward + right * u + up * v;
-          const auto hit = scene.intersect(eye, direction);
+          const Point direction = view.ray(x + (sx + 0.5) / n, y + (sy + 0.5) / n);
+          const auto hit = scene.intersect(view.eye, direction);
           Rgb colour;
           if (!hit.hit) {
             // A soft vertical gradient as background.
-            const float t = static_cast<float>(0.5 + 0.5 * v / half_height);
+            const float t = static_cast<float>(1.0 - static_cast<double>(y) / options.height);
             colour = {0.93f - 0.12f * t, 0.94f - 0.10f * t, 0.96f - 0.05f * t};
           } else {
+            auto& d = depth[static_cast<std::size_t>(y) * options.width + x];
+            d = std::min(d, hit.distance);  // t along the unit ray: the distance
             const FaceHandle f = mesh.face_handle(hit.face);
             const double facing = -OpenMesh::dot(hit.normal, direction / direction.norm());
             const float light = static_cast<float>(0.25 + 0.75 * std::abs(facing));
             Rgb base = is_new(mesh, f) ? patch_colour() : region_colour(region(mesh, f));
-            if (facing < 0.0)
-              base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
+            if (facing < 0.0) base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
             colour = {base.r * light, base.g * light, base.b * light};
           }
           sum.r += colour.r;
@@ -99,6 +168,7 @@ Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOpti
       image.set(x, y, {sum.r * w, sum.g * w, sum.b * w});
     }
   }
+  draw_overlay(image, view, depth, 0.01 * camera.distance, overlay);
   return image;
 }
 

@@ -6,6 +6,8 @@
 #include "core/mesh.h"
 #include "harness/render/image.h"
 
+#include <vector>
+
 namespace holebench::render {
 
 struct Camera {
@@ -26,7 +28,25 @@ struct SnapshotOptions {
 Camera frame_sphere(const Point& target, double radius, const Point& direction,
                     double field_of_view_degrees = 40.0);
 
-Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options = {});
+/// Lines and dots drawn over the shaded mesh where they are not hidden by it (a depth test
+/// against the first hit of each pixel, with a tolerance so that lines on the surface show).
+struct OverlayLine {
+  Point a, b;
+  Rgb colour;
+  float width_px = 2.0f;
+};
+struct OverlayDot {
+  Point p;
+  Rgb colour;
+  float radius_px = 4.0f;
+};
+struct Overlay {
+  std::vector<OverlayLine> lines;
+  std::vector<OverlayDot> dots;
+};
+
+Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options = {},
+                      const Overlay& overlay = {});
 
 /// The colour of region `id` (a fixed palette, the same in every picture).
 Rgb region_colour(int id);

@@ -1,1 +1,299 @@
-// Filled in with the synthetic B-Rep generator.
+// Every synthetic B-Rep case, its labels recomputed a second, independent way from the
+// meshes (never from the generator's B-Rep): regions and k from the input's boundary loops,
+// convexity from the complete mesh's dihedral angles, orientation from fitted region
+// planes, boundary kinds from the signed area of each region's own boundary loop.
+#include "generators/brep/brep_cases.h"
+
+#include "core/boundary_loops.h"
+#include "core/geometry.h"
+#include "core/mesh_builder.h"
+#include "core/plane_fit.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <set>
+
+namespace holebench::generators {
+namespace {
+
+using Key = std::array<double, 3>;
+Key key_of(const Point& p) {
+  return {p[0], p[1], p[2]};
+}
+
+// One visit of a loop to a region: the region and the loop index where the visit starts.
+struct Visit {
+  int region;
+  std::size_t first;
+};
+
+// The regions of the faces along the loop, consecutive repeats merged (cyclically).
+std::vector<Visit> visits_along(const Mesh& mesh, const BoundaryLoop& loop) {
+  const std::size_t n = loop.size();
+  auto region_at = [&](std::size_t i) {
+    return region(mesh, mesh.opposite_face_handle(loop.halfedges[i % n]));
+  };
+  std::vector<Visit> visits;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (region_at(i) != region_at(i + n - 1))
+      visits.push_back({region_at(i), i});
+  }
+  if (visits.empty())
+    visits.push_back({region_at(0), 0});
+  return visits;
+}
+
+// The rotation r with a[(i + r) % n] == b[i] for all i, or -1.
+template <typename T>
+int rotation_of(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size())
+    return -1;
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    bool same = true;
+    for (std::size_t i = 0; i < a.size() && same; ++i)
+      same = a[(i + r) % a.size()] == b[i];
+    if (same)
+      return static_cast<int>(r);
+  }
+  return -1;
+}
+
+// Signed dihedral sign of an edge of the complete mesh at `vertex` between regions a and b.
+std::optional<Convexity> convexity_at(const Mesh& complete, VertexHandle vertex, int a, int b) {
+  for (auto h : complete.voh_range(vertex)) {
+    const auto e = complete.edge_handle(h);
+    if (complete.is_boundary(e))
+      continue;
+    const int ra = region(complete, complete.face_handle(h));
+    const int rb = region(complete, complete.opposite_face_handle(h));
+    if ((ra == a && rb == b) || (ra == b && rb == a))
+      return signed_dihedral_angle(complete, e) > 0.0 ? Convexity::Convex
+                                                                             : Convexity::Reflex;
+  }
+  return std::nullopt;
+}
+
+// Whether the input's region `r` has the loop halfedge `boundary` (a hole halfedge) on its
+// outer boundary: walk the region's own boundary (face side) from the halfedge opposite
+// `boundary` and take the sign of its area about the region's normal.
+BoundaryKind boundary_kind(const Mesh& input, HalfedgeHandle boundary, const Point& normal) {
+  const int r = region(input, input.opposite_face_handle(boundary));
+  auto on_region_boundary = [&](HalfedgeHandle h) {
+    if (input.is_boundary(h) || region(input, input.face_handle(h)) != r)
+      return false;
+    const auto other = input.opposite_face_handle(h);
+    return !other.is_valid() || region(input, other) != r;
+  };
+  const HalfedgeHandle start = input.opposite_halfedge_handle(boundary);
+  Point twice_area(0.0, 0.0, 0.0);
+  HalfedgeHandle h = start;
+  for (std::size_t guard = 0; guard < input.n_halfedges(); ++guard) {
+    twice_area += OpenMesh::cross(input.point(input.from_vertex_handle(h)),
+                                  input.point(input.to_vertex_handle(h)));
+    HalfedgeHandle next;
+    for (auto out : input.voh_range(input.to_vertex_handle(h))) {
+      if (on_region_boundary(out)) {
+        next = out;
+        break;
+      }
+    }
+    h = next;
+    if (!h.is_valid() || h == start)
+      break;
+  }
+  return OpenMesh::dot(twice_area, normal) > 0.0 ? BoundaryKind::Outer : BoundaryKind::Inner;
+}
+
+class BrepCases : public ::testing::TestWithParam<std::string> {};
+
+TEST(BrepCaseList, IdsAreUniqueAndComeInSmallLargePairs) {
+  const auto cases = list_brep_cases();
+  EXPECT_GE(cases.size(), 40u);
+  std::set<std::string> ids;
+  for (const auto& c : cases) {
+    EXPECT_TRUE(ids.insert(c.id).second) << c.id;
+    EXPECT_EQ(c.id.rfind("brep/", 0), 0u);
+    const bool small = c.id.size() > 6 && c.id.substr(c.id.size() - 6) == "/small";
+    const bool large = c.id.size() > 6 && c.id.substr(c.id.size() - 6) == "/large";
+    EXPECT_TRUE(small || large) << c.id;
+  }
+  EXPECT_THROW(make_brep_case("brep/none/small"), std::invalid_argument);
+}
+
+TEST_P(BrepCases, LabelsAgreeWithTheGeometry) {
+  const std::string id = GetParam();
+  const Case c = make_brep_case(id);
+  EXPECT_EQ(c.id, id);
+  ASSERT_GT(c.input.n_faces(), 0u);
+  ASSERT_GT(c.complete.n_faces(), 0u);
+  EXPECT_TRUE(find_boundary_loops(c.complete).empty());
+
+  const auto loops = find_boundary_loops(c.input);
+  ASSERT_EQ(loops.size(), c.holes.size());
+  std::size_t removed_total = 0;
+  for (const auto& hole : c.holes)
+    removed_total += hole.removed_faces.size();
+  EXPECT_EQ(c.input.n_faces() + removed_total, c.complete.n_faces());
+
+  // Complete-mesh lookups by exact position (the input keeps the complete mesh's points).
+  std::map<Key, VertexHandle> complete_vertex;
+  for (auto v : c.complete.vertices())
+    complete_vertex[key_of(c.complete.point(v))] = v;
+  std::set<Key> input_points;
+  for (auto v : c.input.vertices())
+    input_points.insert(key_of(c.input.point(v)));
+  std::vector<char> removed(c.complete.n_faces(), 0);
+  for (const auto& hole : c.holes) {
+    for (int f : hole.removed_faces)
+      removed[f] = 1;
+  }
+  const auto planes = fit_region_planes(c.complete);
+  const double tolerance = 1e-9 * bounding_box_diagonal(c.complete);
+
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    SCOPED_TRACE("hole " + std::to_string(i));
+    ASSERT_TRUE(c.holes[i].labels.has_value());
+    const HoleLabels& labels = *c.holes[i].labels;
+    const auto& loop = loops[i];
+
+    // k and the region order.
+    const auto visits = visits_along(c.input, loop);
+    std::vector<int> regions;
+    for (const auto& v : visits)
+      regions.push_back(v.region);
+    EXPECT_EQ(static_cast<int>(regions.size()), labels.k);
+    const int rotation = rotation_of(regions, labels.regions);
+    ASSERT_GE(rotation, 0) << "regions differ up to rotation";
+
+    // Transition convexity from the complete mesh's dihedral angle at the transition vertex.
+    ASSERT_EQ(labels.transitions.size(), labels.k > 1 ? regions.size() : 0u);
+    for (std::size_t t = 0; t < labels.transitions.size(); ++t) {
+      const std::size_t from = (t + rotation) % visits.size();
+      const std::size_t to = (from + 1) % visits.size();
+      const auto h = loop.halfedges[visits[to].first];
+      const auto vertex = complete_vertex.at(key_of(c.input.point(c.input.from_vertex_handle(h))));
+      const auto convexity =
+          convexity_at(c.complete, vertex, visits[from].region, visits[to].region);
+      ASSERT_TRUE(convexity.has_value()) << "no edge between the regions at transition " << t;
+      EXPECT_EQ(*convexity, labels.transitions[t]) << "transition " << t;
+    }
+
+    // Orientation: inner iff every removed face touching the loop lies in the plane of one
+    // of the regions along it.
+    std::set<int> loop_vertices_complete;
+    for (auto v : loop_vertices(c.input, loop))
+      loop_vertices_complete.insert(complete_vertex.at(key_of(c.input.point(v))).idx());
+    bool all_in_planes = true;
+    for (auto f : c.complete.faces()) {
+      if (!removed[f.idx()])
+        continue;
+      bool touches = false;
+      for (auto v : f.vertices())
+        touches = touches || loop_vertices_complete.count(v.idx()) > 0;
+      if (!touches)
+        continue;
+      bool in_some_plane = false;
+      for (int r : regions) {
+        bool in_plane = true;
+        for (auto v : f.vertices())
+          in_plane = in_plane && std::abs(planes[r].plane.signed_distance(c.complete.point(v))) <
+                                     1e-6 * bounding_box_diagonal(c.complete);
+        in_some_plane = in_some_plane || in_plane;
+      }
+      all_in_planes = all_in_planes && in_some_plane;
+    }
+    EXPECT_EQ(all_in_planes ? Orientation::Inner : Orientation::Outer, labels.orientation);
+
+    // Boundary kinds of outer holes.
+    if (labels.orientation == Orientation::Outer) {
+      ASSERT_EQ(labels.boundary_kinds.size(), regions.size());
+      for (std::size_t v = 0; v < visits.size(); ++v) {
+        const auto kind = boundary_kind(c.input, loop.halfedges[visits[v].first],
+                                        planes[visits[v].region].plane.normal);
+        EXPECT_EQ(kind, labels.boundary_kinds[(v + visits.size() - rotation) % visits.size()])
+            << "visit " << v;
+      }
+    } else {
+      EXPECT_TRUE(labels.boundary_kinds.empty());
+    }
+
+    // Missing corners: complete-model vertices that the input lacks, every face around them
+    // removed.
+    for (const Point& corner : c.holes[i].missing_corners) {
+      ASSERT_TRUE(complete_vertex.count(key_of(corner)));
+      EXPECT_FALSE(input_points.count(key_of(corner)));
+      for (auto f : c.complete.vf_range(complete_vertex.at(key_of(corner))))
+        EXPECT_TRUE(removed[f.idx()]);
+    }
+
+    // Size as CASES.md defines it, and the decision rule.
+    std::vector<Point> points;
+    for (auto v : loop_vertices(c.input, loop))
+      points.push_back(c.input.point(v));
+    double size = 0.0;
+    const bool inner = labels.orientation == Orientation::Inner;
+    if (inner && labels.k == 2) {
+      ASSERT_FALSE(c.holes[i].missing_edges.empty());
+      const Point a = c.holes[i].missing_edges[0].front(), b = c.holes[i].missing_edges[0].back();
+      const Point d = (b - a) / (b - a).norm();
+      for (const Point& p : points)
+        size = std::max(size, ((p - a) - d * OpenMesh::dot(p - a, d)).norm());
+    } else if (inner && labels.k == 3) {
+      ASSERT_EQ(c.holes[i].missing_corners.size(), 1u);
+      for (const Point& p : points)
+        size = std::max(size, (p - c.holes[i].missing_corners[0]).norm());
+    } else {
+      for (const Point& p : points) {
+        for (const Point& q : points)
+          size = std::max(size, (p - q).norm());
+      }
+    }
+    EXPECT_NEAR(size, labels.size, 1e-9 + tolerance);
+    const bool close = inner && labels.k <= 3 && !labels.linearly_dependent_faces &&
+                       labels.size < labels.structure_size;
+    EXPECT_EQ(labels.expected_decision, close ? Decision::CloseAutomatically : Decision::Guide);
+    if (c.holes[i].target != "secondary_loop") {
+      const bool small = id.substr(id.size() - 6) == "/small";
+      EXPECT_EQ(labels.size < labels.structure_size, small);
+      EXPECT_EQ(close, small && inner && labels.k <= 3);
+    }
+    EXPECT_EQ(!labels.known_weak_spot.empty(),
+              id.find("inner-inner") != std::string::npos || id.find("weak/") != std::string::npos);
+  }
+}
+
+TEST_P(BrepCases, SameIdGivesTheSameBytes) {
+  const Case a = make_brep_case(GetParam());
+  const Case b = make_brep_case(GetParam());
+  for (const auto* meshes : {&a.input, &a.complete}) {
+    const Mesh& other = meshes == &a.input ? b.input : b.complete;
+    const auto sa = to_soup(*meshes), sb = to_soup(other);
+    ASSERT_EQ(sa.points.size(), sb.points.size());
+    EXPECT_EQ(0, std::memcmp(sa.points.data(), sb.points.data(), sa.points.size() * sizeof(Point)));
+    EXPECT_EQ(sa.triangles, sb.triangles);
+    EXPECT_EQ(sa.regions, sb.regions);
+  }
+}
+
+std::vector<std::string> all_ids() {
+  std::vector<std::string> ids;
+  for (const auto& c : list_brep_cases())
+    ids.push_back(c.id);
+  return ids;
+}
+
+INSTANTIATE_TEST_SUITE_P(All, BrepCases, ::testing::ValuesIn(all_ids()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param.substr(5);
+                           for (char& ch : name) {
+                             if (!std::isalnum(static_cast<unsigned char>(ch)))
+                               ch = '_';
+                           }
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace holebench::generators

@@ -1,0 +1,20 @@
+// Views and overlays of a case: where to look at its hole, and the figure-5 style marks of
+// the B-Rep paper (hole boundary, transition vertices, face normals).
+#pragma once
+
+#include "core/case.h"
+#include "harness/render/snapshot.h"
+
+namespace holebench::render {
+
+/// The view of a case: along the area-weighted mean normal of the removed faces of the
+/// complete model, tilted a little so that edges and depth read. It uses the ground truth,
+/// which the harness may; it is the same for every method of a case, so pictures compare.
+Camera hole_camera(const Case& c);
+
+/// Marks on a holed mesh: its boundary loops (red), the transition vertices where a loop
+/// passes from one region to the next (dark dots), and one normal per region next to a
+/// hole (black strokes), as figure 5 of the B-Rep paper shows its cases.
+Overlay hole_overlay(const Mesh& holed, double normal_length);
+
+}  // namespace holebench::render
