@@ -2,7 +2,7 @@
 // only, never the ground truth.
 #pragma once
 
-#include "core/mesh.h"
+#include "core/method_result.h"
 #include "methods/user.h"
 
 #include <memory>
@@ -10,36 +10,6 @@
 #include <vector>
 
 namespace holebench {
-
-enum class MethodStatus {
-  Ok,       ///< every hole handled as the method intends
-  Partial,  ///< some holes were left open or only partly handled (see the hole reports)
-  Failed,   ///< no usable result
-};
-const char* to_string(MethodStatus status);
-
-/// What a method did with one boundary loop of its input.
-struct HoleReport {
-  int hole_index = 0;         ///< index in the method's own detection order
-  std::size_t loop_size = 0;  ///< boundary edges of the hole
-  bool closed = false;        ///< the method produced faces that close it
-  std::size_t new_faces = 0;
-  std::size_t new_vertices = 0;
-  std::string note;  ///< what went wrong, or what the method decided
-};
-
-struct PhaseTiming {
-  std::string phase;  ///< a step named as in the method's paper
-  double seconds = 0.0;
-};
-
-struct MethodResult {
-  Mesh repaired;  ///< the input with the method's patches; new elements are `Provenance::New`
-  std::vector<HoleReport> holes;
-  MethodStatus status = MethodStatus::Ok;
-  std::string message;
-  std::vector<PhaseTiming> phases;
-};
 
 class Method {
  public:

@@ -478,9 +478,6 @@ Recipe removal(std::string stem, std::string target, std::string combo,
 
 std::vector<Recipe> make_recipes() {
   std::vector<Recipe> r;
-  const Point px(1, 0, 0), py(0, 1, 0);
-  (void)px;
-  (void)py;
   // Inner holes: a ball around a face point (k = 1), an edge point (k = 2), a vertex (k = 3).
   r.push_back(ball("k1/inner", "face_interior", "k1/inner", make_box_model, {3, 3, 6}, Target::Face,
                    "box, face interior", 0.25, 1.0));

@@ -29,6 +29,7 @@ MethodResult fill_holes_liepa_cgal(const Mesh& holed, const LiepaCgalOptions& op
     HoleReport report;
     report.hole_index = static_cast<int>(i);
     report.loop_size = loops[i].size();
+    report.centroid = loop_centroid(mesh, loops[i]);
     std::vector<FaceHandle> faces;
     std::vector<VertexHandle> vertices;
     const HalfedgeHandle border = loops[i].halfedges.front();

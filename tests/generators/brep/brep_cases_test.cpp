@@ -70,8 +70,7 @@ std::optional<Convexity> convexity_at(const Mesh& complete, VertexHandle vertex,
     const int ra = region(complete, complete.face_handle(h));
     const int rb = region(complete, complete.opposite_face_handle(h));
     if ((ra == a && rb == b) || (ra == b && rb == a))
-      return signed_dihedral_angle(complete, e) > 0.0 ? Convexity::Convex
-                                                                             : Convexity::Reflex;
+      return signed_dihedral_angle(complete, e) > 0.0 ? Convexity::Convex : Convexity::Reflex;
   }
   return std::nullopt;
 }

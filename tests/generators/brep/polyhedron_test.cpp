@@ -33,9 +33,9 @@ std::vector<NamedModel> closed_models() {
           {"pyramid5", [] { return make_pyramid_model(5); }}};
 }
 
-// Closed solids of genus 0 (the tunnel has genus 1: chi = 0).
+// Closed solids of genus 0 have chi = 2; the tunnel and the bridge have genus 1: chi = 0.
 int expected_euler(const std::string& name) {
-  return name == "tunnel" ? 0 : 2;
+  return name == "tunnel" || name == "bridge" ? 0 : 2;
 }
 
 TEST(Polyhedron, TessellationOfAClosedSolidIsWatertightWithOneRegionPerFace) {
@@ -92,7 +92,7 @@ TEST(Polyhedron, EdgeLengthsAreAboutTheSpacing) {
     sum += length;
   }
   EXPECT_GT(shortest, 0.3 * spacing);
-  EXPECT_LT(longest, 1.6 * spacing);
+  EXPECT_LT(longest, 1.7 * spacing);
   EXPECT_NEAR(sum / mesh.n_edges(), spacing, 0.15 * spacing);
 }
 

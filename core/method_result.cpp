@@ -1,4 +1,4 @@
-#include "methods/method.h"
+#include "core/method_result.h"
 
 namespace holebench {
 

@@ -1,0 +1,58 @@
+// What a method returns: shared by methods (which produce it) and metrics (which judge
+// it), so that neither has to include the other.
+#pragma once
+
+#include "core/case.h"
+#include "core/mesh.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace holebench {
+
+enum class MethodStatus {
+  Ok,       ///< every hole handled as the method intends
+  Partial,  ///< some holes were left open or only partly handled (see the hole reports)
+  Failed,   ///< no usable result
+};
+const char* to_string(MethodStatus status);
+
+/// A guidance arrow of the B-Rep paper (section 3.3): where a depth-camera user should
+/// stand (position P) and look (unit direction r) to capture a hole.
+struct GuidanceArrow {
+  Point position{0.0, 0.0, 0.0};
+  Point direction{0.0, 0.0, -1.0};
+};
+
+/// What a method did with one boundary loop of its input.
+struct HoleReport {
+  int hole_index = 0;           ///< index in the method's own detection order
+  std::size_t loop_size = 0;    ///< boundary edges of the hole
+  Point centroid{0.0, 0.0, 0.0};  ///< mean of the loop's vertices (to match ground truth)
+  bool closed = false;          ///< the method produced faces that close it
+  std::size_t new_faces = 0;
+  std::size_t new_vertices = 0;
+  /// For methods that classify holes: the labels they computed (same fields as the
+  /// generator's labels, so that metrics compare them field by field).
+  std::optional<HoleLabels> classification;
+  /// For methods that guide the user instead of (or before) closing.
+  std::optional<GuidanceArrow> arrow;
+  std::string note;  ///< what went wrong, or what the method decided
+  double seconds = 0.0;
+};
+
+struct PhaseTiming {
+  std::string phase;  ///< a step named as in the method's paper
+  double seconds = 0.0;
+};
+
+struct MethodResult {
+  Mesh repaired;  ///< the input with the method's patches; new elements are `Provenance::New`
+  std::vector<HoleReport> holes;
+  MethodStatus status = MethodStatus::Ok;
+  std::string message;
+  std::vector<PhaseTiming> phases;
+};
+
+}  // namespace holebench
