@@ -27,6 +27,10 @@ struct HoleLabels {
   /// regions[i] to regions[(i + 1) % k]. Empty for k = 1.
   std::vector<Convexity> transitions;
   Orientation orientation = Orientation::Inner;
+  /// False where the orientation is not defined for the hole and a classifier does not
+  /// compute it (the B-Rep paper: for k > 3 "the calculation of the orientation fails").
+  /// Comparisons of orientation skip labels or classifications where this is false.
+  bool orientation_known = true;
   /// Per face (same order as `regions`), outer holes only: is the loop part of that face's
   /// inner boundary or of its outer boundary (a_i = +1 / -1 of the B-Rep paper's eq. 4).
   std::vector<BoundaryKind> boundary_kinds;
@@ -54,13 +58,22 @@ struct HoleTruth {
   std::optional<HoleLabels> labels;               ///< where CASES.md labels apply
 };
 
+/// Parameters of the experiment that a method may be given (they are settings a user of
+/// the method would choose, not ground truth).
+struct CaseParameters {
+  /// The structure size delta_s of the B-Rep paper (model units): holes smaller than it may
+  /// be closed automatically. 0 where the case sets none.
+  double structure_size = 0.0;
+};
+
 struct Case {
   std::string id;              ///< stable id, e.g. "box/corner"
   std::string family;          ///< generator family, e.g. "box"
   std::string kind;            ///< case kind for reports, e.g. "corner"
   std::uint64_t seed = 0;      ///< with the id, determines the case bit for bit
   double noise_percent = 0.0;  ///< vertex noise, % of 1 % of the bounding-box diagonal
-  Mesh input;                  ///< the holed mesh: the only thing a method sees
+  Mesh input;                  ///< the holed mesh: the only geometry a method sees
+  CaseParameters parameters;   ///< settings a method may be given
   Mesh complete;               ///< the complete, clean model (ground truth)
   std::vector<HoleTruth> holes;
 };

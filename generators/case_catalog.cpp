@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -32,7 +33,8 @@ std::shared_ptr<const AnalysedModel> procedural_model(const std::string& name) {
   static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto& model = cache[name];
-  if (!model) model = std::make_shared<const AnalysedModel>(analyse_model(name, make_procedural_solid(name)));
+  if (!model)
+    model = std::make_shared<const AnalysedModel>(analyse_model(name, make_procedural_solid(name)));
   return model;
 }
 
@@ -45,8 +47,9 @@ struct CaseCatalog::State {
   mutable std::vector<SkippedModel> skipped;
   void add(CaseDescriptor descriptor) const { descriptors.push_back(std::move(descriptor)); }
 
-  static Case make_punched(const AnalysedModel& model, const PunchTarget& target, const SizeClass& size,
-                           const std::string& id, const std::string& family) {
+  static Case make_punched(const AnalysedModel& model, const PunchTarget& target,
+                           const SizeClass& size, const std::string& id,
+                           const std::string& family) {
     PunchedCaseOptions options;
     options.radius_rel_diag = size.radius_rel_diag;
     options.structure_size_rel_diag = kStructureSizeRelDiag;
@@ -79,17 +82,21 @@ struct CaseCatalog::State {
 
   // The loader of the model a punched id names, without listing the other families.
   std::function<std::shared_ptr<const AnalysedModel>()> loader(const std::string& family,
-                                                              const std::string& name) const {
+                                                               const std::string& name) const {
     if (family == "solid") {
       for (const auto& solid : procedural_solid_names()) {
-        if (solid == name) return [name] { return procedural_model(name); };
+        if (solid == name)
+          return [name] { return procedural_model(name); };
       }
     }
     std::vector<CadModelSource> sources;
-    if (family == "cad" && options.include_cad) sources = cgal_cad_models(options.cad_data_dir);
-    if (family == "file") sources = user_mesh_sources(options.user_meshes);
+    if (family == "cad" && options.include_cad)
+      sources = cgal_cad_models(options.cad_data_dir);
+    if (family == "file")
+      sources = user_mesh_sources(options.user_meshes);
     for (const auto& source : sources) {
-      if (source.name == name) return [source, this] { return prepare_cad_model(source, options.prepare); };
+      if (source.name == name)
+        return [source, this] { return prepare_cad_model(source, options.prepare); };
     }
     return nullptr;
   }
@@ -100,26 +107,32 @@ struct CaseCatalog::State {
     for (std::size_t start = 0;;) {
       const auto slash = id.find('/', start);
       parts.push_back(id.substr(start, slash - start));
-      if (slash == std::string::npos) break;
+      if (slash == std::string::npos)
+        break;
       start = slash + 1;
     }
     const std::string& family = parts[0];
     if (family == "box" && parts.size() == 2) {
-      for (auto target : {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
-        if (parts[1] != to_string(target)) continue;
+      for (auto target :
+           {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
+        if (parts[1] != to_string(target))
+          continue;
         BoxHoleOptions box;
         box.target = target;
         return make_box_hole_case(box);
       }
     }
-    if (family == "brep") return make_brep_case(id);
+    if (family == "brep")
+      return make_brep_case(id);
     if (parts.size() == 4) {
       if (auto load = loader(family, parts[1])) {
         const auto model = load();  // throws InvalidInputError for an unusable model
         for (const auto& target : find_punch_targets(*model)) {
-          if (target.kind != parts[2]) continue;
+          if (target.kind != parts[2])
+            continue;
           for (const auto& size : punch_size_classes()) {
-            if (size.name == parts[3]) return make_punched(*model, target, size, id, family);
+            if (size.name == parts[3])
+              return make_punched(*model, target, size, id, family);
           }
         }
       }
@@ -127,22 +140,36 @@ struct CaseCatalog::State {
     throw std::invalid_argument("unknown case id '" + id + "' (see `holebench cases list`)");
   }
 
+  bool listed_family(const std::string& family) const {
+    return options.families.empty() || std::find(options.families.begin(), options.families.end(),
+                                                 family) != options.families.end();
+  }
+
   void build() const {
-    for (auto target : {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
-      const std::string kind = to_string(target);
-      add({"box/" + kind, "box", kind, fmt::format("box, the skeleton's {} hole", kind)});
+    if (listed_family("box")) {
+      for (auto target :
+           {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
+        const std::string kind = to_string(target);
+        add({"box/" + kind, "box", kind, fmt::format("box, the skeleton's {} hole", kind)});
+      }
     }
-    for (const auto& descriptor : list_brep_cases()) {
-      add(descriptor);
+    if (listed_family("brep")) {
+      for (const auto& descriptor : list_brep_cases())
+        add(descriptor);
     }
-    for (const auto& name : procedural_solid_names()) add_punched("solid", name, loader("solid", name));
-    if (options.include_cad) {
+    if (listed_family("solid")) {
+      for (const auto& name : procedural_solid_names())
+        add_punched("solid", name, loader("solid", name));
+    }
+    if (options.include_cad && listed_family("cad")) {
       for (const auto& source : cgal_cad_models(options.cad_data_dir)) {
         add_punched("cad", source.name, loader("cad", source.name));
       }
     }
-    for (const auto& source : user_mesh_sources(options.user_meshes)) {
-      add_punched("file", source.name, loader("file", source.name));
+    if (listed_family("file")) {
+      for (const auto& source : user_mesh_sources(options.user_meshes)) {
+        add_punched("file", source.name, loader("file", source.name));
+      }
     }
   }
 };
@@ -164,12 +191,23 @@ const std::vector<SkippedModel>& CaseCatalog::skipped() const {
 }
 
 Case CaseCatalog::make(const std::string& id, std::uint64_t seed, double noise_percent) const {
-  if (!(noise_percent >= 0.0)) throw std::invalid_argument("the noise level must be >= 0");
+  if (!(noise_percent >= 0.0))
+    throw std::invalid_argument("the noise level must be >= 0");
   // Making a case never needs the whole list: only the model its id names is loaded.
   Case c = state_->make_direct(id);
   c.id = id;
   c.seed = seed;
   c.noise_percent = noise_percent;
+  // The structure size the labels' decisions were taken against; for a case without labels
+  // the catalog's default, relative to the diagonal.
+  for (const auto& hole : c.holes) {
+    if (c.parameters.structure_size == 0.0 && hole.labels) {
+      c.parameters.structure_size = hole.labels->structure_size;
+    }
+  }
+  if (c.parameters.structure_size == 0.0) {
+    c.parameters.structure_size = kStructureSizeRelDiag * bounding_box_diagonal(c.complete);
+  }
   NoiseOptions noise;
   noise.percent = noise_percent;
   noise.reference_length = noise_reference_length(c.complete);
@@ -185,7 +223,9 @@ const CaseCatalog& default_catalog() {
 }
 }  // namespace
 
-std::vector<CaseDescriptor> list_cases() { return default_catalog().cases(); }
+std::vector<CaseDescriptor> list_cases() {
+  return default_catalog().cases();
+}
 
 Case make_case(const std::string& id, std::uint64_t seed, double noise_percent) {
   return default_catalog().make(id, seed, noise_percent);

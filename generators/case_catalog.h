@@ -34,6 +34,10 @@ struct CatalogOptions {
   bool include_cad = true;  ///< the CGAL data set (analysed on first use: a few seconds)
   std::vector<std::filesystem::path> user_meshes;  ///< files or folders
   PrepareOptions prepare;
+  /// Families to list ("box", "brep", "solid", "cad", "file"); empty: all. Listing a family
+  /// analyses its models, so leaving out the ones a selection cannot match saves time.
+  /// make() works for any family regardless.
+  std::vector<std::string> families;
 };
 
 /// A model the catalog could not use, with the reason (missing, open, non-manifold, ...).

@@ -20,7 +20,8 @@ AnalysedModel analyse_model(std::string name, Mesh mesh, const FeatureOptions& o
   const auto planes = fit_region_planes(mesh);
   model.region_is_planar.resize(planes.size());
   for (std::size_t r = 0; r < planes.size(); ++r) {
-    model.region_is_planar[r] = planes[r].valid && planes[r].plane.rms_residual < 1e-6 * model.diagonal;
+    model.region_is_planar[r] =
+        planes[r].valid && planes[r].plane.rms_residual < 1e-6 * model.diagonal;
   }
   model.mesh = std::move(mesh);
   return model;
@@ -29,6 +30,7 @@ AnalysedModel analyse_model(std::string name, Mesh mesh, const FeatureOptions& o
 namespace {
 
 bool is_apex(const Mesh& mesh, VertexHandle v);
+int single_region(const Mesh& mesh, VertexHandle v);
 
 // Graph distance (along edges) from every vertex to the nearest vertex on a sharp edge or
 // at an apex.
@@ -38,15 +40,20 @@ std::vector<double> distance_to_sharp_edges(const AnalysedModel& model) {
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
   for (auto e : mesh.edges()) {
-    if (!model.features.edge_is_sharp[e.idx()]) continue;
+    if (!model.features.edge_is_sharp[e.idx()])
+      continue;
     for (auto v : {e.v0(), e.v1()}) {
-      if (distance[v.idx()] == 0.0) continue;
+      if (distance[v.idx()] == 0.0)
+        continue;
       distance[v.idx()] = 0.0;
       queue.push({0.0, v.idx()});
     }
   }
   for (auto v : mesh.vertices()) {
-    if (distance[v.idx()] != 0.0 && is_apex(mesh, v)) {
+    // Only a curved region comes to a tip; planar regions are skipped cheaply.
+    const int id = single_region(mesh, v);
+    if (distance[v.idx()] != 0.0 && id != kNoRegion && !model.region_is_planar[id] &&
+        is_apex(mesh, v)) {
       distance[v.idx()] = 0.0;
       queue.push({0.0, v.idx()});
     }
@@ -54,7 +61,8 @@ std::vector<double> distance_to_sharp_edges(const AnalysedModel& model) {
   while (!queue.empty()) {
     const auto [d, index] = queue.top();
     queue.pop();
-    if (d > distance[index]) continue;
+    if (d > distance[index])
+      continue;
     const auto v = mesh.vertex_handle(index);
     for (auto h : mesh.voh_range(v)) {
       const auto w = mesh.to_vertex_handle(h);
@@ -72,8 +80,10 @@ std::vector<double> distance_to_sharp_edges(const AnalysedModel& model) {
 int single_region(const Mesh& mesh, VertexHandle v) {
   int id = kNoRegion;
   for (auto f : mesh.vf_range(v)) {
-    if (id == kNoRegion) id = region(mesh, f);
-    if (region(mesh, f) != id) return kNoRegion;
+    if (id == kNoRegion)
+      id = region(mesh, f);
+    if (region(mesh, f) != id)
+      return kNoRegion;
   }
   return id;
 }
@@ -83,20 +93,23 @@ int single_region(const Mesh& mesh, VertexHandle v) {
 bool is_apex(const Mesh& mesh, VertexHandle v) {
   for (auto f : mesh.vf_range(v)) {
     for (auto g : mesh.vf_range(v)) {
-      if (OpenMesh::dot(face_normal(mesh, f), face_normal(mesh, g)) < 0.0) return true;
+      if (OpenMesh::dot(face_normal(mesh, f), face_normal(mesh, g)) < 0.0)
+        return true;
     }
   }
   return false;
 }
 
-VertexHandle farthest_interior_vertex(const AnalysedModel& model, const std::vector<double>& distance,
-                                      bool planar) {
+VertexHandle farthest_interior_vertex(const AnalysedModel& model,
+                                      const std::vector<double>& distance, bool planar) {
   VertexHandle best;
   double best_distance = 0.0;
   for (auto v : model.mesh.vertices()) {
     const int id = single_region(model.mesh, v);
-    if (id == kNoRegion || static_cast<bool>(model.region_is_planar[id]) != planar) continue;
-    if (!planar && is_apex(model.mesh, v)) continue;
+    if (id == kNoRegion || static_cast<bool>(model.region_is_planar[id]) != planar)
+      continue;
+    if (!planar && is_apex(model.mesh, v))
+      continue;
     if (std::isfinite(distance[v.idx()]) && distance[v.idx()] > best_distance) {
       best_distance = distance[v.idx()];
       best = v;
@@ -109,7 +122,8 @@ VertexHandle chain_middle(const Mesh& mesh, const SharpEdgeChain& chain) {
   double walked = 0.0;
   for (std::size_t i = 0; i < chain.edges.size(); ++i) {
     walked += mesh.calc_edge_length(chain.edges[i]);
-    if (walked >= 0.5 * chain.length) return chain.vertices[i + 1];
+    if (walked >= 0.5 * chain.length)
+      return chain.vertices[i + 1];
   }
   return chain.vertices.front();
 }
@@ -118,8 +132,10 @@ VertexHandle cone_apex(const AnalysedModel& model) {
   const Mesh& mesh = model.mesh;
   for (auto v : mesh.vertices()) {
     const int id = single_region(mesh, v);
-    if (id == kNoRegion || model.region_is_planar[id]) continue;
-    if (is_apex(mesh, v)) return v;
+    if (id == kNoRegion || model.region_is_planar[id])
+      continue;
+    if (is_apex(mesh, v))
+      return v;
   }
   return VertexHandle();
 }
@@ -135,7 +151,9 @@ PunchTarget multi_feature_target(const AnalysedModel& model) {
   for (std::size_t a = 0; a < chains.size(); ++a) {
     for (std::size_t b = a + 1; b < chains.size(); ++b) {
       const std::set<int> ends{chains[a].vertices.front().idx(), chains[a].vertices.back().idx()};
-      if (ends.count(chains[b].vertices.front().idx()) || ends.count(chains[b].vertices.back().idx())) continue;
+      if (ends.count(chains[b].vertices.front().idx()) ||
+          ends.count(chains[b].vertices.back().idx()))
+        continue;
       for (auto va : chains[a].vertices) {
         for (auto vb : chains[b].vertices) {
           const double d = (mesh.point(va) - mesh.point(vb)).norm();
@@ -148,7 +166,8 @@ PunchTarget multi_feature_target(const AnalysedModel& model) {
       }
     }
   }
-  if (!found) return {};
+  if (!found)
+    return {};
   VertexHandle nearest;
   double nearest_distance = std::numeric_limits<double>::infinity();
   for (auto v : mesh.vertices()) {
@@ -168,36 +187,44 @@ std::vector<PunchTarget> find_punch_targets(const AnalysedModel& model) {
   std::vector<PunchTarget> targets;
   const auto distance = distance_to_sharp_edges(model);
   const VertexHandle planar = farthest_interior_vertex(model, distance, true);
-  if (planar.is_valid()) targets.push_back({"face_interior", planar});
+  if (planar.is_valid())
+    targets.push_back({"face_interior", planar});
 
   for (Convexity convexity : {Convexity::Convex, Convexity::Reflex}) {
     const SharpEdgeChain* longest = nullptr;
     for (const auto& chain : model.features.chains) {
-      if (chain.convexity == convexity && (!longest || chain.length > longest->length)) longest = &chain;
+      if (chain.convexity == convexity && (!longest || chain.length > longest->length))
+        longest = &chain;
     }
     if (longest) {
-      targets.push_back({std::string("edge_") + to_string(convexity), chain_middle(model.mesh, *longest)});
+      targets.push_back(
+          {std::string("edge_") + to_string(convexity), chain_middle(model.mesh, *longest)});
     }
   }
 
   std::set<std::string> signatures;
   for (const auto& corner : model.features.corners) {
     const std::string signature = corner.signature();
-    if (!signatures.insert(signature).second) continue;
+    if (!signatures.insert(signature).second)
+      continue;
     targets.push_back({"corner_" + signature, corner.vertex});
   }
 
   const PunchTarget multi = multi_feature_target(model);
-  if (multi.vertex.is_valid()) targets.push_back(multi);
+  if (multi.vertex.is_valid())
+    targets.push_back(multi);
   const VertexHandle curved = farthest_interior_vertex(model, distance, false);
-  if (curved.is_valid()) targets.push_back({"curved_face", curved});
+  if (curved.is_valid())
+    targets.push_back({"curved_face", curved});
   const VertexHandle apex = cone_apex(model);
-  if (apex.is_valid()) targets.push_back({"cone_apex", apex});
+  if (apex.is_valid())
+    targets.push_back({"cone_apex", apex});
   if (planar.is_valid()) {
     // An island needs room: its inside must keep whole triangles, so the hole spans several
     // edge lengths whatever the size class.
     double length = 0.0;
-    for (auto e : model.mesh.edges()) length += model.mesh.calc_edge_length(e);
+    for (auto e : model.mesh.edges())
+      length += model.mesh.calc_edge_length(e);
     targets.push_back({"island", planar, 8.0 * length / model.mesh.n_edges()});
   }
   return targets;

@@ -1,5 +1,6 @@
 #include "harness/case_selection.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace holebench::harness {
@@ -21,7 +22,8 @@ bool wildcard_match(const std::string& pattern, const std::string& text) {
       return false;
     }
   }
-  while (p < pattern.size() && pattern[p] == '*') ++p;
+  while (p < pattern.size() && pattern[p] == '*')
+    ++p;
   return p == pattern.size();
 }
 
@@ -43,9 +45,22 @@ std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatal
   }
   std::vector<generators::CaseDescriptor> selected;
   for (std::size_t i = 0; i < all.size(); ++i) {
-    if (chosen[i]) selected.push_back(all[i]);
+    if (chosen[i])
+      selected.push_back(all[i]);
   }
   return selected;
+}
+
+std::vector<std::string> families_of_patterns(const std::vector<std::string>& patterns) {
+  std::vector<std::string> families;
+  for (const auto& pattern : patterns) {
+    const std::string family = pattern.substr(0, pattern.find('/'));
+    if (family.find_first_of("*?") != std::string::npos)
+      return {};
+    if (std::find(families.begin(), families.end(), family) == families.end())
+      families.push_back(family);
+  }
+  return families;
 }
 
 const std::vector<std::string>& default_case_patterns() {

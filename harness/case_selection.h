@@ -17,6 +17,10 @@ bool wildcard_match(const std::string& pattern, const std::string& text);
 std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
                                                      const std::vector<std::string>& patterns);
 
+/// The families (the id's first component) that `patterns` can match; empty when a pattern
+/// starts with a wildcard (any family).
+std::vector<std::string> families_of_patterns(const std::vector<std::string>& patterns);
+
 /// The default suite of `holebench run` (until named suites exist): the skeleton's box
 /// holes, every synthetic B-Rep case, and the small holes of the procedural solids.
 const std::vector<std::string>& default_case_patterns();

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
+#include "harness/oracle_user.h"
 #include "harness/render/case_view.h"
 #include "harness/render/snapshot.h"
 #include "methods/registry.h"
@@ -15,7 +16,7 @@
 namespace holebench::harness {
 
 std::string Job::id() const {
-  return fmt::format("{}|{}|{}|{}", case_id, method_id, noise_percent, seed);
+  return fmt::format("{}|{}|{}|{}|{}", case_id, method_id, user, noise_percent, seed);
 }
 
 const char* to_string(JobStatus status) {
@@ -62,13 +63,15 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
 
   try {
     const auto method = make_method(job.method_id);
-    NoUser user;
-    record.user = user.kind();
+    const std::unique_ptr<User> user = make_user(job.user, c);
+    record.user = user->kind();
     const auto start = std::chrono::steady_clock::now();
-    MethodResult result = method->run(c.input, user);
+    MethodParameters parameters;
+    parameters.structure_size = c.parameters.structure_size;
+    MethodResult result = method->run(c.input, parameters, *user);
     record.method_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    record.user_interventions = user.interventions();
+    record.user_interventions = user->interventions();
     record.phases = result.phases;
     copy_holes(result, record);
     record.message = result.message;
@@ -77,7 +80,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
       return record;
     }
     record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
-    record.metrics = evaluate(c, result.repaired, options.evaluation).values;
+    record.metrics = evaluate(c, result, options.evaluation).values;
     record.metrics.push_back({"time_method_s", record.method_seconds});
     if (!options.snapshot_dir.empty()) {
       std::string name = job.id();

@@ -17,8 +17,9 @@ struct Job {
   std::string method_id;
   double noise_percent = 0.0;  ///< vertex noise of the input, % of 1 % of the diagonal
   std::uint64_t seed = 0;
+  std::string user = "no_user";  ///< who answers the method's questions: "no_user", "oracle"
 
-  /// Stable key used to match records across runs: "case_id|method_id|noise|seed".
+  /// Stable key used to match records across runs: "case_id|method_id|user|noise|seed".
   std::string id() const;
 };
 

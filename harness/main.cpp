@@ -6,8 +6,8 @@
 #include "harness/run_command.h"
 #include "methods/registry.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
@@ -25,11 +25,12 @@ void print_skipped(const CaseCatalog& catalog) {
 }
 
 int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patterns, bool labels) {
-  const auto selected =
-      holebench::harness::select_cases(catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
+  const auto selected = holebench::harness::select_cases(
+      catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
   for (const auto& c : selected) {
     std::string extra;
-    if (labels) extra = "  " + holebench::harness::labels_summary(catalog.make(c.id));
+    if (labels)
+      extra = "  " + holebench::harness::labels_summary(catalog.make(c.id));
     fmt::print("{:<48} {}{}\n", c.id, c.description, extra);
   }
   print_skipped(catalog);
@@ -39,8 +40,8 @@ int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patte
 
 int cases_export(const CaseCatalog& catalog, const std::vector<std::string>& patterns,
                  const std::filesystem::path& dir, double noise, std::uint64_t seed) {
-  const auto selected =
-      holebench::harness::select_cases(catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
+  const auto selected = holebench::harness::select_cases(
+      catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
   for (std::size_t i = 0; i < selected.size(); ++i) {
     const auto c = catalog.make(selected[i].id, seed, noise);
     holebench::harness::export_case(c, dir / holebench::harness::case_folder_name(c.id));
@@ -51,12 +52,14 @@ int cases_export(const CaseCatalog& catalog, const std::vector<std::string>& pat
 }
 
 void print_summary_table(const holebench::harness::RunSummary& summary) {
-  fmt::print("\n| case | method | noise % | status | hausdorff (rel. diag) | new faces | time (ms) |\n");
+  fmt::print(
+      "\n| case | method | noise % | status | hausdorff (rel. diag) | new faces | time (ms) |\n");
   fmt::print("|---|---|---:|---|---:|---:|---:|\n");
   for (const auto& r : summary.records) {
     auto metric = [&](const char* name) {
       for (const auto& m : r.metrics) {
-        if (m.name == name) return fmt::format("{:.3g}", m.value);
+        if (m.name == name)
+          return fmt::format("{:.3g}", m.value);
       }
       return std::string("-");
     };
@@ -70,11 +73,13 @@ void print_summary_table(const holebench::harness::RunSummary& summary) {
 }
 
 void add_catalog_options(CLI::App* command, CatalogOptions& catalog, bool& no_cad) {
-  command->add_option("--mesh", catalog.user_meshes,
-                      "Your own mesh file or folder (OFF/OBJ/STL/PLY), punched like the CAD "
-                      "models; repeatable. Its cases are file/<stem>/...")
+  command
+      ->add_option("--mesh", catalog.user_meshes,
+                   "Your own mesh file or folder (OFF/OBJ/STL/PLY), punched like the CAD "
+                   "models; repeatable. Its cases are file/<stem>/...")
       ->check(CLI::ExistingPath);
-  command->add_flag("--no-cad", no_cad, "Leave out the CGAL data set's CAD models (faster listing)");
+  command->add_flag("--no-cad", no_cad,
+                    "Leave out the CGAL data set's CAD models (faster listing)");
   command->add_option("--cad-dir", catalog.cad_data_dir,
                       "Folder with the CGAL data set's meshes (default: extracted by the build; "
                       "or $HOLEBENCH_CAD_DIR)");
@@ -118,7 +123,8 @@ int main(int argc, char** argv) {
   auto* cases_gallery_cmd = cases->add_subcommand(
       "gallery", "Render one picture per case (figure-5 style) and a gallery.html page");
   cases_gallery_cmd->add_option("dir", gallery_dir, "Output folder")->required();
-  cases_gallery_cmd->add_option("patterns", case_patterns, "Case ids or patterns (default: brep/*)");
+  cases_gallery_cmd->add_option("patterns", case_patterns,
+                                "Case ids or patterns (default: brep/*)");
   add_catalog_options(cases_gallery_cmd, catalog_options, no_cad);
 
   holebench::harness::RunOptions run_options;
@@ -131,6 +137,9 @@ int main(int argc, char** argv) {
                   "Noise level in % of 1 % of the diagonal, repeatable (default: 0)")
       ->check(CLI::NonNegativeNumber);
   run->add_option("--seed", run_options.seeds, "Seed, repeatable (default: 0)");
+  run->add_option("--user", run_options.users,
+                  "Who answers the methods' questions: no_user (default) or oracle (from the "
+                  "ground truth); repeatable");
   bool no_snapshots = false;
   run->add_flag("--no-snapshots", no_snapshots, "Do not render a PNG per job");
   run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
@@ -143,7 +152,8 @@ int main(int argc, char** argv) {
   try {
     if (list->parsed()) {
       fmt::print("methods:\n");
-      for (const auto& m : holebench::make_all_methods()) fmt::print("  {:<16} {}\n", m->id(), m->description());
+      for (const auto& m : holebench::make_all_methods())
+        fmt::print("  {:<16} {}\n", m->id(), m->description());
       fmt::print(
           "case families (see `holebench cases list`):\n"
           "  box/<target>                  the walking skeleton's box holes\n"
@@ -154,9 +164,12 @@ int main(int argc, char** argv) {
       return 0;
     }
     catalog_options.include_cad = !no_cad;
-    if (cases_list_cmd->parsed()) return cases_list(CaseCatalog(catalog_options), case_patterns, with_labels);
+    catalog_options.families = holebench::harness::families_of_patterns(case_patterns);
+    if (cases_list_cmd->parsed())
+      return cases_list(CaseCatalog(catalog_options), case_patterns, with_labels);
     if (cases_export_cmd->parsed()) {
-      return cases_export(CaseCatalog(catalog_options), case_patterns, export_dir, export_noise, export_seed);
+      return cases_export(CaseCatalog(catalog_options), case_patterns, export_dir, export_noise,
+                          export_seed);
     }
     if (cases_gallery_cmd->parsed()) {
       const CaseCatalog catalog(catalog_options);

@@ -132,12 +132,14 @@ void write_results_json(const std::filesystem::path& path, const RunContext& con
 
 void write_results_csv(const std::filesystem::path& path, const std::vector<JobRecord>& records) {
   auto out = open_for_writing(path);
-  out << "job_id,case_id,method,seed,case_family,case_kind,noise_percent,status,metric,value\n";
+  out << "job_id,case_id,method,user,seed,case_family,case_kind,noise_percent,status,metric,"
+         "value\n";
   for (const auto& record : records) {
     const std::string prefix = fmt::format(
-        "{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
-        csv_field(record.job.method_id), record.job.seed, csv_field(record.case_family),
-        csv_field(record.case_kind), record.job.noise_percent, to_string(record.status));
+        "{},{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
+        csv_field(record.job.method_id), csv_field(record.job.user), record.job.seed,
+        csv_field(record.case_family), csv_field(record.case_kind), record.job.noise_percent,
+        to_string(record.status));
     if (record.metrics.empty())
       out << prefix << ",,\n";
     // fmt's "{}" is the shortest text that reads back to the same double.

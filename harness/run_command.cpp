@@ -2,6 +2,7 @@
 
 #include "generators/case_catalog.h"
 #include "harness/case_selection.h"
+#include "harness/oracle_user.h"
 #include "harness/results_file.h"
 #include "methods/registry.h"
 
@@ -18,15 +19,22 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
       catalog, options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
   std::vector<std::string> methods = options.method_ids;
   if (methods.empty()) {
-    for (const auto& method : make_all_methods()) methods.push_back(method->id());
+    for (const auto& method : make_all_methods())
+      methods.push_back(method->id());
   } else {
-    for (const auto& id : methods) make_method(id);  // throws for an unknown id
+    for (const auto& id : methods)
+      make_method(id);  // throws for an unknown id
   }
+  for (const auto& user : options.users)
+    check_user_kind(user);
   std::vector<Job> jobs;
   for (const auto& c : cases) {
     for (const auto& method_id : methods) {
-      for (double noise : options.noise_levels) {
-        for (auto seed : options.seeds) jobs.push_back({c.id, method_id, noise, seed});
+      for (const auto& user : options.users) {
+        for (double noise : options.noise_levels) {
+          for (auto seed : options.seeds)
+            jobs.push_back({c.id, method_id, noise, seed, user});
+        }
       }
     }
   }
@@ -35,7 +43,12 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
 
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const generators::CaseCatalog catalog(options.catalog);
+  generators::CatalogOptions catalog_options = options.catalog;
+  if (catalog_options.families.empty()) {
+    catalog_options.families = families_of_patterns(
+        options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+  }
+  const generators::CaseCatalog catalog(catalog_options);
   const std::vector<Job> jobs = plan_jobs(options, catalog);
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;

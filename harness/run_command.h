@@ -13,8 +13,9 @@ struct RunOptions {
   std::filesystem::path out_dir;
   /// Case ids or wildcard patterns ('*', '?'); empty: default_case_patterns().
   std::vector<std::string> case_patterns;
-  std::vector<std::string> method_ids;  ///< empty: every method
-  std::vector<double> noise_levels{0.0};  ///< % of 1 % of the diagonal
+  std::vector<std::string> method_ids;        ///< empty: every method
+  std::vector<std::string> users{"no_user"};  ///< "no_user", "oracle"
+  std::vector<double> noise_levels{0.0};      ///< % of 1 % of the diagonal
   std::vector<std::uint64_t> seeds{0};
   generators::CatalogOptions catalog;
   bool snapshots = true;

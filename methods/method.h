@@ -11,6 +11,13 @@
 
 namespace holebench {
 
+/// Settings of the experiment a method may use (never ground truth).
+struct MethodParameters {
+  /// The structure size delta_s (model units) of the B-Rep paper: a hole smaller than it is
+  /// small enough to close automatically. 0: the method's own default.
+  double structure_size = 0.0;
+};
+
 class Method {
  public:
   virtual ~Method() = default;
@@ -19,7 +26,8 @@ class Method {
   /// One line for `holebench list`.
   virtual std::string description() const = 0;
   /// Fills the holes of `holed`. May throw; the harness records the exception.
-  virtual MethodResult run(const Mesh& holed, User& user) const = 0;
+  virtual MethodResult run(const Mesh& holed, const MethodParameters& parameters,
+                           User& user) const = 0;
 };
 
 }  // namespace holebench

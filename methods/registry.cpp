@@ -1,5 +1,6 @@
 #include "methods/registry.h"
 
+#include "methods/brep_guidance/brep_guidance.h"
 #include "methods/liepa_cgal/liepa_cgal.h"
 
 #include <stdexcept>
@@ -9,6 +10,7 @@ namespace holebench {
 std::vector<std::unique_ptr<Method>> make_all_methods() {
   std::vector<std::unique_ptr<Method>> methods;
   methods.push_back(std::make_unique<LiepaCgalMethod>());
+  methods.push_back(std::make_unique<BrepGuidanceMethod>());
   return methods;
 }
 

@@ -1,8 +1,17 @@
 #include "metrics/evaluation.h"
 
-#include "core/boundary_loops.h"
 #include "core/geometry.h"
-#include "metrics/hausdorff_distance.h"
+#include "metrics/classification_accuracy.h"
+#include "metrics/embree/arrow_visibility.h"
+#include "metrics/embree/triangle_scene.h"
+#include "metrics/face_subset.h"
+#include "metrics/feature_recovery.h"
+#include "metrics/hole_matching.h"
+#include "metrics/surface_distance.h"
+#include "metrics/validity.h"
+
+#include <algorithm>
+#include <memory>
 
 namespace holebench {
 
@@ -14,17 +23,224 @@ const MetricValue* Evaluation::find(const std::string& name) const {
   return nullptr;
 }
 
-Evaluation evaluate(const Case& c, const Mesh& repaired, const EvaluationOptions& options) {
+namespace {
+
+class Recorder {
+ public:
+  explicit Recorder(std::vector<MetricValue>& values) : values_(values) {}
+  void add(const char* name, double value) { values_.push_back({name, value}); }
+  void add_flag(const char* name, bool value) { values_.push_back({name, value ? 1.0 : 0.0}); }
+  void add_count(const char* name, std::size_t value) {
+    values_.push_back({name, static_cast<double>(value)});
+  }
+
+ private:
+  std::vector<MetricValue>& values_;
+};
+
+double fraction(std::size_t part, std::size_t whole) {
+  return static_cast<double>(part) / static_cast<double>(whole);
+}
+
+void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
+                   double diagonal, const embree::TriangleScene& complete_scene,
+                   const embree::TriangleScene& repaired_scene, Recorder& out) {
+  const Mesh& repaired = result.repaired;
+  SurfaceDistanceOptions whole;
+  whole.hausdorff.error_bound = options.hausdorff_error_bound_rel_diag * diagonal;
+  whole.mean.error_bound = options.mean_error_bound_rel_diag * diagonal;
+  const SurfaceDistance d =
+      surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole);
+  out.add("hausdorff_rel_diag", d.hausdorff.lower() / diagonal);
+  out.add("hausdorff_upper_rel_diag", d.hausdorff.upper() / diagonal);
+  out.add("mean_distance_rel_diag", d.mean() / diagonal);
+  out.add("rms_distance_rel_diag", d.rms() / diagonal);
+
+  // The hole region: the patch against the complete model, and the removed faces of the
+  // complete model against the repaired mesh.
+  std::vector<int> removed;
+  for (const auto& hole : c.holes)
+    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
+  std::sort(removed.begin(), removed.end());
+  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  bool converged = d.converged();
+  if (!removed.empty()) {
+    SurfaceDistanceOptions hole_options = whole;
+    hole_options.mean.error_bound = options.hole_mean_error_bound_rel_diag * diagonal;
+    const Mesh truth = face_subset(c.complete, removed);
+    const auto truth_to_repaired_h =
+        directed_hausdorff(truth, repaired_scene, hole_options.hausdorff);
+    const auto truth_to_repaired_m =
+        directed_mean_distance(truth, repaired_scene, hole_options.mean);
+    double lower = truth_to_repaired_h.lower, upper = truth_to_repaired_h.upper;
+    double mean = truth_to_repaired_m.mean, rms = truth_to_repaired_m.rms;
+    converged = converged && truth_to_repaired_h.converged && truth_to_repaired_m.converged;
+    const std::vector<int> patch_faces = new_face_indices(repaired);
+    if (!patch_faces.empty()) {
+      const Mesh patch = face_subset(repaired, patch_faces);
+      const auto h = directed_hausdorff(patch, complete_scene, hole_options.hausdorff);
+      const auto m = directed_mean_distance(patch, complete_scene, hole_options.mean);
+      lower = std::max(lower, h.lower);
+      upper = std::max(upper, h.upper);
+      mean = std::max(mean, m.mean);
+      rms = std::max(rms, m.rms);
+      converged = converged && h.converged && m.converged;
+    }
+    out.add("hole_hausdorff_rel_diag", lower / diagonal);
+    out.add("hole_hausdorff_upper_rel_diag", upper / diagonal);
+    out.add("hole_mean_distance_rel_diag", mean / diagonal);
+    out.add("hole_rms_distance_rel_diag", rms / diagonal);
+  }
+  out.add_flag("distance_converged_ok", converged);
+
+  // The slice paper's Table 2 error: the mean distance of the new vertices from the
+  // complete model (exact closest points).
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (auto v : repaired.vertices()) {
+    if (!is_new(repaired, v))
+      continue;
+    sum += complete_scene.closest_point(repaired.point(v)).distance;
+    ++count;
+  }
+  if (count > 0)
+    out.add("new_vertex_mean_error_rel_diag", sum / count / diagonal);
+}
+
+void add_feature_recovery(const Case& c, const MethodResult& result,
+                          const EvaluationOptions& options, double diagonal,
+                          const embree::TriangleScene& complete_scene, Recorder& out) {
+  FeatureRecoveryOptions feature_options;
+  feature_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
+  feature_options.edge_tolerance = options.edge_tolerance_rel_diag * diagonal;
+  feature_options.edge_search_radius = options.edge_search_radius_rel_diag * diagonal;
+  const FeatureRecovery f = feature_recovery(c, result.repaired, complete_scene, feature_options);
+  if (!f.corner_errors.empty()) {
+    double sum = 0.0, largest = 0.0;
+    for (double e : f.corner_errors) {
+      sum += e;
+      largest = std::max(largest, e);
+    }
+    out.add("missing_corner_error_mean_rel_diag", sum / f.corner_errors.size() / diagonal);
+    out.add("missing_corner_error_max_rel_diag", largest / diagonal);
+  }
+  if (!f.edges.empty()) {
+    std::size_t present = 0;
+    double covered = 0.0, largest = 0.0;
+    bool any_distance = false;
+    for (const auto& e : f.edges) {
+      present += e.present;
+      covered += e.covered_fraction;
+      if (e.distance) {
+        any_distance = true;
+        largest = std::max(largest, *e.distance);
+      }
+    }
+    out.add("missing_edge_present_fraction", fraction(present, f.edges.size()));
+    out.add("missing_edge_covered_fraction", covered / f.edges.size());
+    if (any_distance)
+      out.add("missing_edge_distance_max_rel_diag", largest / diagonal);
+  }
+  if (f.normal_deviation_mean_deg) {
+    out.add("patch_normal_deviation_mean_deg", *f.normal_deviation_mean_deg);
+    out.add("patch_normal_deviation_max_deg", *f.normal_deviation_max_deg);
+  }
+}
+
+void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
+                  double diagonal, Recorder& out) {
+  ValidityOptions validity_options;
+  validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
+  validity_options.self_intersections = options.self_intersections;
+  const Validity v = validity(c.input, result.repaired, validity_options);
+  out.add_count("open_boundary_loops_count", v.open_boundary_loops);
+  out.add_flag("is_closed", v.open_boundary_loops == 0);
+  out.add_count("non_manifold_vertices_count", v.non_manifold_vertices);
+  out.add_flag("is_manifold", v.non_manifold_vertices == 0);
+  out.add_flag("is_consistently_oriented", v.orientation_conflicts == 0);
+  if (v.self_intersections_tested) {
+    out.add_count("self_intersections_count", v.self_intersections);
+    out.add_count("patch_self_intersections_count", v.patch_self_intersections);
+  }
+  out.add_count("new_faces_count", count_new_faces(result.repaired));
+  out.add_count("new_degenerate_faces_count", v.new_degenerate_faces);
+  out.add_count("original_faces_changed_count", v.original_faces_changed);
+  out.add_flag("original_faces_unchanged_ok", v.original_faces_changed == 0);
+}
+
+void add_classification(const Case& c, const MethodResult& result, Recorder& out) {
+  const ClassificationAccuracy a = classification_accuracy(c, result);
+  if (a.compared == 0)
+    return;
+  out.add("classification_k_correct_fraction", fraction(a.k_correct, a.compared));
+  if (a.orientation_compared > 0)
+    out.add("classification_orientation_correct_fraction",
+            fraction(a.orientation_correct, a.orientation_compared));
+  out.add("classification_convexity_correct_fraction", fraction(a.convexity_correct, a.compared));
+  if (a.boundary_kind_compared > 0)
+    out.add("classification_boundary_kind_correct_fraction",
+            fraction(a.boundary_kind_correct, a.boundary_kind_compared));
+  out.add("classification_decision_correct_fraction", fraction(a.decision_correct, a.compared));
+  out.add("classification_all_correct_fraction", fraction(a.all_correct, a.compared));
+}
+
+void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptions& options,
+                double diagonal, const embree::TriangleScene& complete_scene, Recorder& out) {
+  const auto matches = match_holes(c, result.holes);
+  embree::ArrowVisibilityOptions arrow_options;
+  arrow_options.field_of_view_degrees = options.arrow_field_of_view_degrees;
+  arrow_options.sample_spacing = options.arrow_sample_spacing_rel_diag * diagonal;
+  arrow_options.search_directions = options.arrow_search_directions;
+  arrow_options.surface_tolerance = 1e-7 * diagonal;
+  std::unique_ptr<embree::TriangleScene> holed_scene;
+  std::size_t arrows = 0, outside = 0, shaft_free = 0;
+  double visible = 0.0, best = 0.0, error = 0.0;
+  for (std::size_t i = 0; i < result.holes.size(); ++i) {
+    const auto& report = result.holes[i];
+    if (!report.arrow || matches[i].truth < 0)
+      continue;
+    const auto& truth = c.holes[matches[i].truth];
+    const auto samples = embree::sample_faces(c.complete, truth.removed_faces, arrow_options);
+    if (samples.points.empty())
+      continue;
+    if (!holed_scene)
+      holed_scene = std::make_unique<embree::TriangleScene>(c.input);
+    const auto q =
+        embree::arrow_quality(*report.arrow, samples, complete_scene, *holed_scene, arrow_options);
+    ++arrows;
+    outside += q.position_outside;
+    shaft_free += q.shaft_free;
+    visible += q.visible_fraction;
+    best += q.best_visible_fraction;
+    error += q.direction_error_deg;
+  }
+  if (arrows == 0)
+    return;
+  out.add_count("arrows_count", arrows);
+  out.add_flag("arrow_position_outside_ok", outside == arrows);
+  out.add_flag("arrow_shaft_free_ok", shaft_free == arrows);
+  out.add("arrow_visible_fraction", visible / arrows);
+  out.add("arrow_best_visible_fraction", best / arrows);
+  out.add("arrow_direction_error_deg", error / arrows);
+}
+
+}  // namespace
+
+Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options) {
   Evaluation evaluation;
+  Recorder out(evaluation.values);
   const double diagonal = bounding_box_diagonal(c.complete);
-  HausdorffOptions hausdorff_options;
-  hausdorff_options.error_bound = options.hausdorff_error_bound_rel_diag * diagonal;
-  const HausdorffResult hausdorff = hausdorff_distance(repaired, c.complete, hausdorff_options);
-  evaluation.values.push_back({"hausdorff_rel_diag", hausdorff.lower() / diagonal});
-  evaluation.values.push_back({"hausdorff_upper_rel_diag", hausdorff.upper() / diagonal});
-  evaluation.values.push_back(
-      {"open_boundary_loops_count", static_cast<double>(find_boundary_loops(repaired).size())});
-  evaluation.values.push_back({"new_faces_count", static_cast<double>(count_new_faces(repaired))});
+  if (!(diagonal > 0.0) || c.complete.n_faces() == 0)
+    return evaluation;  // no ground truth to measure against
+  const embree::TriangleScene complete_scene(c.complete);
+  if (result.repaired.n_faces() > 0) {
+    const embree::TriangleScene repaired_scene(result.repaired);
+    add_distances(c, result, options, diagonal, complete_scene, repaired_scene, out);
+    add_feature_recovery(c, result, options, diagonal, complete_scene, out);
+  }
+  add_validity(c, result, options, diagonal, out);
+  add_classification(c, result, out);
+  add_arrows(c, result, options, diagonal, complete_scene, out);
   return evaluation;
 }
 

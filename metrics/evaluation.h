@@ -1,9 +1,10 @@
-// The metrics of one job: pure functions of the case (with its ground truth) and the
-// repaired mesh a method returned. Metrics never see the method itself.
+// The metrics of one job: pure functions of the case (with its ground truth) and what a
+// method returned (core/method_result.h). Metrics never see the method itself. Every metric
+// is defined, with its unit and error bound, in docs/metrics.md.
 #pragma once
 
 #include "core/case.h"
-#include "core/mesh.h"
+#include "core/method_result.h"
 
 #include <string>
 #include <vector>
@@ -11,15 +12,35 @@
 namespace holebench {
 
 /// One named number. Names carry their unit: `_rel_diag` is relative to the bounding-box
-/// diagonal of the complete model, `_s` seconds, `_count` a count.
+/// diagonal of the complete model, `_deg` degrees, `_s` seconds, `_count` a count,
+/// `_fraction` a fraction in [0, 1]; booleans are 0/1 with `_ok` or `is_` in the name.
+/// A metric that does not apply to a job is absent, never a placeholder number.
 struct MetricValue {
   std::string name;
   double value = 0.0;
 };
 
 struct EvaluationOptions {
-  /// Error bound of the Hausdorff distance, relative to the complete model's diagonal.
+  /// Error bound of the Hausdorff distances, relative to the complete model's diagonal.
   double hausdorff_error_bound_rel_diag = 1e-4;
+  /// Error bound of the mean and RMS distances over the whole model (relative).
+  double mean_error_bound_rel_diag = 1e-3;
+  /// Error bound of the mean and RMS distances over the hole region (relative).
+  double hole_mean_error_bound_rel_diag = 1e-3;
+  /// Feature recovery: spacing of the samples on a missing edge, the distance within which
+  /// a repaired sharp edge covers a sample, and the radius of "near" (all relative).
+  double edge_sample_spacing_rel_diag = 1e-3;
+  double edge_tolerance_rel_diag = 5e-3;
+  double edge_search_radius_rel_diag = 5e-2;
+  /// Validity: a new face of at most this area (relative to diagonal^2) is degenerate.
+  double degenerate_area_rel_diag2 = 1e-14;
+  /// Validity: run CGAL's self-intersection test (the costliest validity check).
+  bool self_intersections = true;
+  /// Guidance arrows: the camera's full field of view, the spacing of the samples on the
+  /// missing surface (relative) and the directions of the best-direction search.
+  double arrow_field_of_view_degrees = 60.0;
+  double arrow_sample_spacing_rel_diag = 5e-3;
+  int arrow_search_directions = 4096;
 };
 
 struct Evaluation {
@@ -27,11 +48,10 @@ struct Evaluation {
   const MetricValue* find(const std::string& name) const;
 };
 
-/// Evaluates `repaired` against `c.complete`:
-///  - hausdorff_rel_diag: two-sided Hausdorff distance (its attained lower bound), and
-///    hausdorff_upper_rel_diag, the bound it is guaranteed below;
-///  - open_boundary_loops_count: boundary loops the repaired mesh still has;
-///  - new_faces_count: faces marked `Provenance::New`.
-Evaluation evaluate(const Case& c, const Mesh& repaired, const EvaluationOptions& options = {});
+/// Evaluates `result` (its repaired mesh and hole reports) against the ground truth of `c`.
+/// Embree scenes of the complete, repaired and (for arrows) holed model are built once and
+/// shared by every metric. Deterministic: the same inputs give the same numbers.
+Evaluation evaluate(const Case& c, const MethodResult& result,
+                    const EvaluationOptions& options = {});
 
 }  // namespace holebench

@@ -16,6 +16,8 @@ packages=(
   libfmt-dev nlohmann-json3-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev
+  # cross-check of the distance metrics against MeshLab (tests/metrics/meshlab_hausdorff_test.cpp)
+  meshlab xvfb xauth
   # reports: plots
   python3 python3-matplotlib
   # formatting of the sources

@@ -364,7 +364,15 @@ Case make_removal_case(const Recipe& recipe, const RemovalSpec& spec, bool large
     labels.linearly_dependent_faces =
         labels.k >= 3 && linearly_dependent(unit_topology, loop.regions);
     labels.structure_size = kStructureSize;
-    labels.known_weak_spot = recipe.weak_spot;
+    // A loop along two or more inner boundaries is the paper's "multiple inner boundaries"
+    // weak spot whatever the recipe; the recipe's own weak spot applies to its other loops
+    // unless it is that one.
+    const auto inner_kinds =
+        std::count(labels.boundary_kinds.begin(), labels.boundary_kinds.end(), BoundaryKind::Inner);
+    if (inner_kinds >= 2)
+      labels.known_weak_spot = "multiple_inner_boundaries";
+    else if (recipe.weak_spot != "multiple_inner_boundaries")
+      labels.known_weak_spot = recipe.weak_spot;
     if (primary < 0 && combo_of(labels) == recipe.combo)
       primary = static_cast<int>(all_labels.size());
     all_labels.push_back(std::move(labels));
@@ -549,7 +557,68 @@ std::vector<Recipe> make_recipes() {
                       "L-shaped block: top and all walls but the two at its reflex inner corner "
                       "removed"));
 
+  // Outer holes on two inner boundaries: a rib standing in a pocket, with a tunnel through it
+  // (floor flush with the plate top) or an L-shaped beam from the pocket's front rim into it
+  // (top flush with the plate top). The rib keeps its front away from the plate top except
+  // along the tunnel floor's / the beam top's edge, so that the two faces meet along one
+  // edge only.
+  r.push_back(removal("k2/outer/convex/inner-inner", "faces", "k2/outer/convex/inner-inner",
+                      make_tunnel_rib_model, {{0.5, 0.5, 3}, {2.5, 4, 2}}, true,
+                      "rib in a pocket, tunnel through the rib: only the plate top (its pocket "
+                      "rim and the tunnel floor) and the rib front (its mouth) kept"));
+  r.push_back(removal(
+      "k3/outer/convex-convex-reflex/inner-inner-outer", "faces",
+      "k3/outer/convex-convex-reflex/inner-inner-outer", make_tunnel_rib_model,
+      {{0.5, 0.5, 3}, {2.5, 4, 2}, {3, 4.5, 4}}, true,
+      "rib in a pocket, tunnel through the rib: plate top, rib front and the tunnel's left wall "
+      "kept (mouth corner on the tunnel floor)"));
+  r.push_back(removal(
+      "k3/outer/convex-convex-convex/inner-inner-outer", "faces",
+      "k3/outer/convex-convex-convex/inner-inner-outer", make_tunnel_rib_model,
+      {{0.5, 0.5, 3}, {2.5, 4, 2}, {5, 4.5, 2.5}}, true,
+      "rib in a pocket, tunnel through the rib with a trench in its floor: plate top, rib front "
+      "and the trench's left wall kept (the mouth's reflex corner at the trench's edge)"));
+  r.push_back(removal("k2/outer/reflex/inner-inner", "faces", "k2/outer/reflex/inner-inner",
+                      make_beam_rib_model, {{0.5, 0.5, 3}, {3.5, 4, 2}}, true,
+                      "rib in a pocket, beam from the pocket rim into the rib: only the plate "
+                      "top (its pocket rim and the beam top) and the rib front kept"));
+  r.push_back(removal(
+      "k3/outer/convex-reflex-reflex/inner-inner-outer", "faces",
+      "k3/outer/convex-reflex-reflex/inner-inner-outer", make_beam_rib_model,
+      {{0.5, 0.5, 3}, {3.5, 4, 2}, {4, 2.5, 2.5}}, true,
+      "rib in a pocket, beam from the pocket rim into the rib: plate top, rib front and the "
+      "beam's left side kept"));
+  r.push_back(removal(
+      "k3/outer/reflex-reflex-reflex/inner-inner-outer", "faces",
+      "k3/outer/reflex-reflex-reflex/inner-inner-outer", make_beam_rib_model,
+      {{0.5, 0.5, 3}, {3.5, 4, 2}, {6, 2.5, 3.5}}, true,
+      "rib in a pocket, L-shaped beam from the pocket rim into the rib: plate top, rib front and "
+      "the face of the beam's raised bar above the beam top kept (reflex corner of the beam's "
+      "cross-section)"));
+
   // Variants.
+  r.push_back(removal(
+      "weak/multiple-inner-boundaries", "faces", "k2/outer/convex/inner-inner",
+      make_tunnel_rib_model,
+      {{1.5, 2, 1},
+       {5, 1, 2},
+       {1, 3, 2},
+       {10, 3, 2},
+       {1.5, 5, 2},
+       {9.5, 5, 2},
+       {2.5, 5, 4},
+       {2, 4.5, 4},
+       {9, 4.5, 4},
+       {3, 4.5, 4},
+       {5, 4.5, 5},
+       {8, 4.5, 4},
+       {6.5, 4.5, 2},
+       {5, 4.5, 2.5},
+       {6.5, 5, 2.5}},
+      false,
+      "rib in a pocket, tunnel through the rib, as a scan from the front sees it: the pocket, "
+      "the tunnel, the trench and the rib's back and sides missing, everything else kept"));
+  r.back().weak_spot = "multiple_inner_boundaries";
   r.push_back(removal("k3/linearly-dependent", "faces",
                       "k3/outer/convex-convex-convex/outer-outer-outer",
                       make_triangular_prism_model, {{8, 2, 1}}, false,

@@ -64,6 +64,24 @@ Polyhedron make_bridge_model() {
                            .fill({4, 1, 2}, {6, 4, 3}));
 }
 
+Polyhedron make_tunnel_rib_model() {
+  return to_polyhedron(VoxelSolid({11, 10, 6})
+                           .fill({0, 0, 0}, {11, 10, 3})
+                           .carve({1, 1, 1}, {10, 5, 3})
+                           .fill({2, 4, 1}, {9, 5, 6})
+                           .carve({3, 4, 3}, {8, 5, 5})
+                           .carve({5, 4, 2}, {8, 5, 3}));
+}
+
+Polyhedron make_beam_rib_model() {
+  return to_polyhedron(VoxelSolid({11, 10, 6})
+                           .fill({0, 0, 0}, {11, 10, 3})
+                           .carve({2, 1, 1}, {9, 5, 3})
+                           .fill({3, 4, 1}, {8, 5, 6})
+                           .fill({4, 1, 2}, {6, 4, 3})
+                           .fill({6, 1, 2}, {7, 4, 4}));
+}
+
 Polyhedron make_twisted_model() {
   return to_polyhedron(VoxelSolid({10, 10, 6})
                            .fill({0, 0, 0}, {10, 10, 3})

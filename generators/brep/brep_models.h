@@ -23,6 +23,18 @@ Polyhedron make_l_boss_model();    ///< plate with an L-shaped block (a reflex i
 Polyhedron make_tunnel_model();
 /// Plate with a pocket in front of a block and a bridge across the pocket's top.
 Polyhedron make_bridge_model();
+/// Plate [0,11] x [0,10] x [0,3] with a pocket [1,10] x [1,5] x [1,3] and a rib
+/// [2,9] x [4,5] x [1,6] standing in it; a tunnel [3,8] x [4,5] x [3,5] runs through the
+/// rib with its floor flush with the plate top, and a trench [5,8] x [4,5] x [2,3] deepens
+/// the tunnel's right part. The plate top (via the tunnel floor) and the rib front (via the
+/// mouth) both have the mouth's bottom edge on an inner loop; the rib keeps the rib front
+/// away from the plate top everywhere else.
+Polyhedron make_tunnel_rib_model();
+/// Plate [0,11] x [0,10] x [0,3] with a pocket [2,9] x [1,5] x [1,3] and a rib
+/// [3,8] x [4,5] x [1,6] standing in it; an L-shaped beam (bridge [4,6] x [1,4] x [2,3] with
+/// its top flush with the plate top, bar [6,7] x [1,4] x [2,4]) spans from the pocket's
+/// front rim to the rib front, whose inner loop is the beam's cross-section.
+Polyhedron make_beam_rib_model();
 /// A block half over a pocket: the plate top meets the vertical face in front twice along
 /// one line, once reflex (at the block) and once convex (at the pocket's rim).
 Polyhedron make_twisted_model();

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -77,6 +78,22 @@ bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
   args->query->radius =
       std::nextafter(static_cast<float>(distance), std::numeric_limits<float>::infinity());
   return true;
+}
+
+struct RadiusQueryState {
+  const std::vector<std::array<Point, 3>>* triangles;
+  Point query;
+  double radius = 0.0;
+  std::vector<unsigned> primitives;
+};
+
+bool radius_callback(RTCPointQueryFunctionArguments* args) {
+  auto* state = static_cast<RadiusQueryState*>(args->userPtr);
+  const auto& tri = (*state->triangles)[args->primID];
+  const Point q = closest_point_on_triangle(state->query, tri[0], tri[1], tri[2]);
+  if ((q - state->query).norm() <= state->radius)
+    state->primitives.push_back(args->primID);
+  return false;  // the radius never shrinks
 }
 
 RTCRay make_ray(const Point& origin, const Point& direction, double t_near, double t_far) {
@@ -173,6 +190,32 @@ ClosestPoint TriangleScene::closest_point(const Point& p) const {
   result.distance = state.best_distance;
   result.face = face_of_primitive_[state.best_primitive];
   return result;
+}
+
+std::vector<int> TriangleScene::faces_within(const Point& p, double radius) const {
+  RadiusQueryState state;
+  state.triangles = &triangles_;
+  state.query = p;
+  state.radius = radius;
+  RTCPointQuery query;
+  query.x = static_cast<float>(p[0]);
+  query.y = static_cast<float>(p[1]);
+  query.z = static_cast<float>(p[2]);
+  query.time = 0.0f;
+  // Rounded up (and padded by the coordinates' single-precision rounding) so that the BVH
+  // never culls a triangle within the radius.
+  const double pad = 1e-6 * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + radius);
+  query.radius =
+      std::nextafter(static_cast<float>(radius + pad), std::numeric_limits<float>::infinity());
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(scene_, &query, &context, radius_callback, &state);
+  std::vector<int> faces;
+  faces.reserve(state.primitives.size());
+  for (unsigned primitive : state.primitives)
+    faces.push_back(face_of_primitive_[primitive]);
+  std::sort(faces.begin(), faces.end());
+  return faces;
 }
 
 RayHit TriangleScene::intersect(const Point& origin, const Point& direction, double t_near,

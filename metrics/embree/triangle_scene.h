@@ -41,6 +41,9 @@ class TriangleScene {
   /// the smallest index wins, so the answer does not depend on the BVH's layout.
   ClosestPoint closest_point(const Point& p) const;
 
+  /// Every face within `radius` of `p` (exact double-precision distances), by face index.
+  std::vector<int> faces_within(const Point& p, double radius) const;
+
   /// The first face a ray from `origin` along `direction` hits within (t_near, t_far).
   RayHit intersect(const Point& origin, const Point& direction, double t_near = 0.0,
                    double t_far = std::numeric_limits<double>::infinity()) const;

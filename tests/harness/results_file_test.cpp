@@ -29,7 +29,7 @@ TEST(ResultsFile, JsonKeepsNumbersAsNumbersAndExact) {
   EXPECT_EQ(json["context"]["suite"], "unit");
   EXPECT_EQ(json["context"]["schema_version"], kResultsSchemaVersion);
   const auto& record = json["results"][0];
-  EXPECT_EQ(record["job_id"], "box/edge|liepa_cgal|5|3");
+  EXPECT_EQ(record["job_id"], "box/edge|liepa_cgal|no_user|5|3");
   EXPECT_EQ(record["noise_percent"], 5.0);
   EXPECT_EQ(record["status"], "partial");
   EXPECT_EQ(record["seed"], 3);

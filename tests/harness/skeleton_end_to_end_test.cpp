@@ -29,6 +29,7 @@ TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
   RunOptions options;
   options.out_dir = fresh_dir("skeleton");
   options.case_patterns = {"box/*"};
+  options.method_ids = {"liepa_cgal"};
   options.catalog.include_cad = false;
   options.progress = false;
   const RunSummary summary = run_jobs(options);
@@ -84,6 +85,7 @@ TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
 TEST(SkeletonEndToEnd, SameInputsGiveTheSameRecords) {
   RunOptions options;
   options.case_patterns = {"box/corner"};
+  options.method_ids = {"liepa_cgal"};
   options.catalog.include_cad = false;
   options.snapshots = false;
   options.progress = false;
@@ -112,7 +114,7 @@ TEST(SkeletonEndToEnd, UnknownCaseOrMethodIsRejectedBeforeRunning) {
 }
 
 TEST(RunJob, AnUnknownCaseBecomesAnInvalidInputRecordNotACrash) {
-  const JobRecord record = run_job({"no/such/case", "liepa_cgal", 0.0, 0}, {});
+  const JobRecord record = run_job({"no/such/case", "liepa_cgal", 0.0, 0, "no_user"}, {});
   EXPECT_EQ(record.status, JobStatus::InvalidInput);
   EXPECT_NE(record.message.find("no/such/case"), std::string::npos);
 }

@@ -16,7 +16,7 @@ class LiepaCgalOnBoxCases : public ::testing::TestWithParam<std::string> {};
 TEST_P(LiepaCgalOnBoxCases, ClosesEveryHoleAndKeepsTheRestOfTheMesh) {
   const Case c = generators::make_case(GetParam());
   NoUser user;
-  const MethodResult result = LiepaCgalMethod().run(c.input, user);
+  const MethodResult result = LiepaCgalMethod().run(c.input, {}, user);
   EXPECT_EQ(result.status, MethodStatus::Ok);
   EXPECT_TRUE(find_boundary_loops(result.repaired).empty());
   ASSERT_EQ(result.holes.size(), 1u);
@@ -54,7 +54,8 @@ TEST(LiepaCgal, PlanarHoleStaysPlanar) {
   const Case c = generators::make_case("box/face_interior");
   const MethodResult result = fill_holes_liepa_cgal(c.input);
   for (auto v : result.repaired.vertices()) {
-    if (!is_new(result.repaired, v)) continue;
+    if (!is_new(result.repaired, v))
+      continue;
     EXPECT_NEAR(result.repaired.point(v)[2], 1.0, 1e-6);
   }
 }

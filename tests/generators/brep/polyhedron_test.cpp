@@ -28,14 +28,17 @@ std::vector<NamedModel> closed_models() {
           {"pocket", make_pocket_model},
           {"tunnel", make_tunnel_model},
           {"bridge", make_bridge_model},
+          {"tunnel_rib", make_tunnel_rib_model},
+          {"beam_rib", make_beam_rib_model},
           {"twisted", make_twisted_model},
           {"triangular_prism", make_triangular_prism_model},
           {"pyramid5", [] { return make_pyramid_model(5); }}};
 }
 
-// Closed solids of genus 0 have chi = 2; the tunnel and the bridge have genus 1: chi = 0.
+// Closed solids of genus 0 have chi = 2; the tunnel, the bridge and the two rib models (a
+// tunnel through the rib, a beam from the pocket rim to the rib) have genus 1: chi = 0.
 int expected_euler(const std::string& name) {
-  return name == "tunnel" || name == "bridge" ? 0 : 2;
+  return name == "tunnel" || name == "bridge" || name == "tunnel_rib" || name == "beam_rib" ? 0 : 2;
 }
 
 TEST(Polyhedron, TessellationOfAClosedSolidIsWatertightWithOneRegionPerFace) {

@@ -1,0 +1,260 @@
+// Benchmarks of the metrics' kernels (distances, closest points, arrow visibility), the
+// snapshot renderer and each method on fixed cases, beside the CGAL references the issue
+// compares with. Every fixture is generated (same id, same bytes), so runs compare.
+//
+// Run: holebench_benchmarks --benchmark_format=json > benchmarks.json
+#include "core/geometry.h"
+#include "core/mesh_builder.h"
+#include "generators/case_catalog.h"
+#include "harness/render/case_view.h"
+#include "harness/render/snapshot.h"
+#include "methods/registry.h"
+#include "metrics/embree/arrow_visibility.h"
+#include "metrics/embree/triangle_scene.h"
+#include "metrics/hausdorff_distance.h"
+#include "metrics/surface_distance.h"
+
+// CGAL's graph traits for OpenMesh must come before any CGAL algorithm header.
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace holebench {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A torus of n x m quads (2nm triangles), outward oriented.
+Mesh torus(int n, int m, double bump) {
+  TriangleSoup soup;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const double u = 2.0 * kPi * i / n, v = 2.0 * kPi * j / m;
+      // A smooth bump on one side: the "repaired" surface that differs from the truth.
+      const double r = 0.3 + bump * std::exp(-8.0 * (u * u + (v - kPi) * (v - kPi)));
+      soup.points.emplace_back((1.0 + r * std::cos(v)) * std::cos(u),
+                               (1.0 + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  }
+  auto index = [n, m](int i, int j) { return ((i + n) % n) * m + (j + m) % m; };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      soup.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+      soup.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  }
+  return build_mesh(soup);
+}
+
+struct Pair {
+  Mesh a, b;
+  double diagonal = 0.0;
+};
+
+// The pairs: the fandisk repaired by liepa_cgal against its complete model; a 100k-triangle
+// torus against the same torus with a bump; and against itself moved by 1e-7 of its size
+// (near-zero distance).
+const Pair& pair(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Pair>> pairs;
+  auto& slot = pairs[name];
+  if (!slot) {
+    slot = std::make_unique<Pair>();
+    if (name == "fandisk") {
+      const Case c = generators::make_case("cad/fandisk/edge_convex/small");
+      NoUser user;
+      MethodParameters parameters;
+      parameters.structure_size = c.parameters.structure_size;
+      slot->a = make_method("liepa_cgal")->run(c.input, parameters, user).repaired;
+      slot->b = c.complete;
+    } else if (name == "torus100k_bump") {
+      slot->a = torus(250, 200, 0.02);
+      slot->b = torus(250, 200, 0.0);
+    } else {
+      slot->a = torus(250, 200, 0.0);
+      slot->b = slot->a;
+      for (auto v : slot->b.vertices())
+        slot->b.point(v) += Point(1e-7, -1e-7, 1e-7);
+    }
+    slot->diagonal = bounding_box_diagonal(slot->b);
+  }
+  return *slot;
+}
+
+const char* pair_name(int index) {
+  static const char* names[] = {"fandisk", "torus100k_bump", "torus100k_near_zero"};
+  return names[index];
+}
+
+// Two-sided Hausdorff distance, error bound 1e-4 of the diagonal: ours (Embree scenes
+// included in the time) and CGAL's bounded_error_symmetric_Hausdorff_distance.
+void BM_Hausdorff_Ours(benchmark::State& state) {
+  const Pair& p = pair(pair_name(state.range(0)));
+  state.SetLabel(pair_name(state.range(0)));
+  HausdorffOptions options;
+  options.error_bound = 1e-4 * p.diagonal;
+  double value = 0.0;
+  for (auto _ : state) {
+    const auto result = hausdorff_distance(p.a, p.b, options);
+    value = result.upper();
+    benchmark::DoNotOptimize(value);
+  }
+  state.counters["hausdorff_rel_diag"] = value / p.diagonal;
+}
+BENCHMARK(BM_Hausdorff_Ours)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_Hausdorff_Cgal(benchmark::State& state) {
+  const Pair& p = pair(pair_name(state.range(0)));
+  state.SetLabel(pair_name(state.range(0)));
+  double value = 0.0;
+  for (auto _ : state) {
+    value = CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<
+        CGAL::Sequential_tag>(p.a, p.b, 1e-4 * p.diagonal);
+    benchmark::DoNotOptimize(value);
+  }
+  state.counters["hausdorff_rel_diag"] = value / p.diagonal;
+}
+BENCHMARK(BM_Hausdorff_Cgal)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Mean and RMS distance (error bound 1e-3 of the diagonal), both directions.
+void BM_MeanDistance_Ours(benchmark::State& state) {
+  const Pair& p = pair(pair_name(state.range(0)));
+  state.SetLabel(pair_name(state.range(0)));
+  const embree::TriangleScene a_scene(p.a), b_scene(p.b);
+  SurfaceDistanceOptions options;
+  options.hausdorff.error_bound = 1e-4 * p.diagonal;
+  options.mean.error_bound = 1e-3 * p.diagonal;
+  for (auto _ : state) {
+    const auto a = directed_mean_distance(p.a, b_scene, options.mean);
+    const auto b = directed_mean_distance(p.b, a_scene, options.mean);
+    benchmark::DoNotOptimize(a.mean + b.mean);
+  }
+}
+BENCHMARK(BM_MeanDistance_Ours)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+// Closest-point throughput: the same query points (the vertices of the bumped torus, moved
+// off the surface) against the flat torus, through our Embree scene and a CGAL AABB tree.
+std::vector<Point> query_points() {
+  std::vector<Point> points;
+  const Mesh& a = pair("torus100k_bump").a;
+  for (auto v : a.vertices())
+    points.push_back(a.point(v) * 1.01 + Point(0.003, -0.002, 0.001));
+  return points;
+}
+
+void BM_ClosestPoint_Embree(benchmark::State& state) {
+  const Mesh& b = pair("torus100k_bump").b;
+  const embree::TriangleScene scene(b);
+  const auto points = query_points();
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (const Point& q : points)
+      sum += scene.closest_point(q).distance;
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * points.size());
+}
+BENCHMARK(BM_ClosestPoint_Embree)->Unit(benchmark::kMillisecond);
+
+void BM_ClosestPoint_CgalAabb(benchmark::State& state) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  const Mesh& b = pair("torus100k_bump").b;
+  Tree tree(faces(b).first, faces(b).second, b);
+  tree.accelerate_distance_queries();
+  std::vector<Kernel::Point_3> points;
+  for (const Point& q : query_points())
+    points.emplace_back(q[0], q[1], q[2]);
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (const auto& q : points)
+      sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(q, tree.closest_point(q))));
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * points.size());
+}
+BENCHMARK(BM_ClosestPoint_CgalAabb)->Unit(benchmark::kMillisecond);
+
+// Arrow visibility: an arrow above the fandisk's hole (scenes built outside the loop, as
+// the evaluation builds them once).
+void BM_ArrowVisibility(benchmark::State& state) {
+  const Case c = generators::make_case("cad/fandisk/face_interior/large");
+  const double diagonal = bounding_box_diagonal(c.complete);
+  const embree::TriangleScene complete_scene(c.complete), holed_scene(c.input);
+  embree::ArrowVisibilityOptions options;
+  options.sample_spacing = 5e-3 * diagonal;
+  options.surface_tolerance = 1e-7 * diagonal;
+  const auto samples = embree::sample_faces(c.complete, c.holes[0].removed_faces, options);
+  const auto camera = render::hole_camera(c);
+  const GuidanceArrow arrow{camera.target - camera.direction * diagonal, camera.direction};
+  for (auto _ : state) {
+    const auto q = embree::arrow_quality(arrow, samples, complete_scene, holed_scene, options);
+    benchmark::DoNotOptimize(q.visible_fraction);
+  }
+  state.counters["samples"] = static_cast<double>(samples.points.size());
+}
+BENCHMARK(BM_ArrowVisibility)->Unit(benchmark::kMillisecond);
+
+// Snapshot rendering at the harness's default size.
+void BM_RenderSnapshot(benchmark::State& state) {
+  const Case c = generators::make_case("cad/fandisk/face_interior/large");
+  const auto camera = render::hole_camera(c);
+  for (auto _ : state) {
+    auto image = render::render_snapshot(c.input, camera);
+    benchmark::DoNotOptimize(image);
+  }
+}
+BENCHMARK(BM_RenderSnapshot)->Unit(benchmark::kMillisecond);
+
+// Each method on fixed cases.
+const char* method_case(int index) {
+  static const char* ids[] = {"box/corner", "brep/k3/inner/convex-convex-convex/small",
+                              "cad/fandisk/edge_convex/small"};
+  return ids[index];
+}
+
+void BM_Method(benchmark::State& state, const std::string& method_id) {
+  const Case c = generators::make_case(method_case(state.range(0)));
+  state.SetLabel(method_case(state.range(0)));
+  const auto method = make_method(method_id);
+  MethodParameters parameters;
+  parameters.structure_size = c.parameters.structure_size;
+  for (auto _ : state) {
+    NoUser user;  // methods run without a user here (the harness's default)
+    auto result = method->run(c.input, parameters, user);
+    benchmark::DoNotOptimize(result);
+  }
+}
+
+void register_methods() {
+  for (const auto& method : make_all_methods()) {
+    const std::string id = method->id();
+    benchmark::RegisterBenchmark(("BM_Method/" + id).c_str(),
+                                 [id](benchmark::State& s) { BM_Method(s, id); })
+        ->DenseRange(0, 2)
+        ->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace
+}  // namespace holebench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  holebench::register_methods();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,34 @@
+// The users that answer a method's questions: none at all, or an oracle that answers from
+// the case's ground truth (which the harness may see and a method may not).
+#pragma once
+
+#include "core/case.h"
+#include "methods/user.h"
+
+#include <memory>
+#include <string>
+
+namespace holebench::harness {
+
+/// Answers from the ground truth: agrees to closing a hole only where the hole it is
+/// about (the ground-truth hole whose removed faces lie nearest the proposal's centroid)
+/// is expected to be closed automatically. Each refusal counts as an intervention.
+class OracleUser final : public User {
+ public:
+  explicit OracleUser(const Case& c) : case_(c) {}
+  std::string kind() const override { return "oracle"; }
+  bool agree_to_closing(const ClosingProposal& proposal) override;
+
+ private:
+  const Case& case_;
+};
+
+/// The index of the ground-truth hole nearest `point` (by its removed faces' centroids in
+/// the complete model), or -1 if the case has no hole.
+int nearest_truth_hole(const Case& c, const Point& point);
+
+/// "no_user" or "oracle"; throws std::invalid_argument for anything else.
+void check_user_kind(const std::string& kind);
+std::unique_ptr<User> make_user(const std::string& kind, const Case& c);
+
+}  // namespace holebench::harness

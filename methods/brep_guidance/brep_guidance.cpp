@@ -1,0 +1,101 @@
+#include "methods/brep_guidance/brep_guidance.h"
+
+#include "core/geometry.h"
+#include "methods/brep_guidance/brep_faces.h"
+#include "methods/brep_guidance/exact_closing.h"
+#include "methods/brep_guidance/guidance_arrow.h"
+#include "methods/brep_guidance/hole_classification.h"
+#include "methods/brep_guidance/hole_detection.h"
+
+#include <chrono>
+
+namespace holebench {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+}  // namespace
+
+MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parameters, User& user,
+                               const BrepGuidanceOptions& options) {
+  using namespace brep_guidance;
+  MethodResult result;
+  result.repaired = holed;
+  const double diagonal = bounding_box_diagonal(holed);
+  const double structure_size = parameters.structure_size > 0.0
+                                    ? parameters.structure_size
+                                    : options.default_structure_size_rel_diag * diagonal;
+  const double d = options.arrow_distance_rel_diag * diagonal;
+
+  auto start = Clock::now();
+  const BrepFaces faces = extract_brep_faces(holed, options.segmentation);
+  result.phases.push_back(
+      {faces.from_input ? "faces (input regions)" : "faces (planar segmentation)",
+       seconds_since(start)});
+
+  start = Clock::now();
+  const std::vector<Hole> holes = detect_holes(holed, faces, options.dependence_tolerance);
+  result.phases.push_back({"detection (algorithm 1)", seconds_since(start)});
+
+  ClassificationOptions classification_options;
+  classification_options.structure_size = structure_size;
+  double classify_seconds = 0.0, close_seconds = 0.0, guide_seconds = 0.0;
+  std::size_t failed = 0;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const Hole& hole = holes[i];
+    const auto hole_start = Clock::now();
+    HoleReport report;
+    report.hole_index = static_cast<int>(i);
+    report.loop_size = hole.halfedges.size();
+    report.centroid = hole.centroid;
+
+    start = Clock::now();
+    const Classification c = classify_hole(holed, faces, hole, classification_options);
+    report.classification = to_labels(hole, c, structure_size);
+    classify_seconds += seconds_since(start);
+
+    bool guide = c.decision == Decision::Guide;
+    if (!guide) {
+      // Cases a and b: the hole can be closed automatically; does the user agree?
+      ClosingProposal proposal;
+      proposal.hole_index = report.hole_index;
+      proposal.hole_centroid = hole.centroid;
+      proposal.hole_size = c.size;
+      if (!user.agree_to_closing(proposal)) {
+        guide = true;
+        report.note = "closable, but the user disagreed (case b): guided";
+      }
+    }
+    if (!guide) {
+      start = Clock::now();
+      const ClosingResult closing = close_hole_exactly(result.repaired, faces, hole);
+      close_seconds += seconds_since(start);
+      report.closed = closing.closed;
+      report.new_faces = closing.new_faces;
+      report.new_vertices = closing.new_vertices;
+      if (!closing.closed) {
+        ++failed;
+        guide = true;
+        report.note = "exact closing failed: " + closing.error + "; guided instead";
+      }
+    }
+    if (guide) {
+      start = Clock::now();
+      report.arrow = guidance_arrow(holed, faces, hole, c, d);
+      guide_seconds += seconds_since(start);
+    }
+    report.seconds = seconds_since(hole_start);
+    result.holes.push_back(std::move(report));
+  }
+  result.phases.push_back({"classification (figure 3, equations 1-2)", classify_seconds});
+  result.phases.push_back({"exact closing", close_seconds});
+  result.phases.push_back({"guidance (equations 3-5)", guide_seconds});
+  result.status = failed == 0 ? MethodStatus::Ok : MethodStatus::Partial;
+  if (failed > 0)
+    result.message = std::to_string(failed) + " closable holes could not be closed";
+  return result;
+}
+
+}  // namespace holebench

@@ -1,0 +1,49 @@
+// Method brep_guidance: section 3 of "B-Rep hole closing and user guidance"
+// (../shared/papers/brep-hole-closing-and-user-guidance.txt). Every hole is detected
+// (Algorithm 1), classified (cardinality, convexity at each transition by figure 3,
+// orientation by equations 1 and 2, boundary kinds, size), then either closed exactly
+// (inner, k <= 3, smaller than the structure size delta_s, and the user agrees: the paper's
+// case a) or given a guidance arrow (equations 3-5: cases b and c).
+#pragma once
+
+#include "core/planar_segmentation.h"
+#include "methods/method.h"
+
+namespace holebench {
+
+struct BrepGuidanceOptions {
+  /// delta_s relative to the input's bounding-box diagonal, used when the experiment gives
+  /// no structure size (MethodParameters::structure_size = 0).
+  double default_structure_size_rel_diag = 0.06;
+  /// The arrow's distance d from the hole (equations 3-5), relative to the input's diagonal.
+  double arrow_distance_rel_diag = 0.3;
+  /// Triple product (k = 3) or cross product (k = 2) of unit normals below which the faces
+  /// count as linearly dependent.
+  double dependence_tolerance = 1e-3;
+  /// Segmentation used when the input has no region ids.
+  PlanarSegmentationOptions segmentation;
+};
+
+/// Runs the method on `holed`. Never sees ground truth: the structure size is a setting of
+/// the experiment, and agreement comes from `user`.
+MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parameters, User& user,
+                               const BrepGuidanceOptions& options = {});
+
+class BrepGuidanceMethod final : public Method {
+ public:
+  explicit BrepGuidanceMethod(BrepGuidanceOptions options = {}) : options_(options) {}
+  std::string id() const override { return "brep_guidance"; }
+  std::string description() const override {
+    return "B-Rep paper: hole classification, exact closing of small inner holes (k <= 3), "
+           "guidance arrows for the rest";
+  }
+  MethodResult run(const Mesh& holed, const MethodParameters& parameters,
+                   User& user) const override {
+    return run_brep_guidance(holed, parameters, user, options_);
+  }
+
+ private:
+  BrepGuidanceOptions options_;
+};
+
+}  // namespace holebench

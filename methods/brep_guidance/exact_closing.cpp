@@ -1,0 +1,190 @@
+#include "methods/brep_guidance/exact_closing.h"
+
+#include "methods/common/planar_polygon_triangulation.h"
+
+#include <cmath>
+
+namespace holebench::brep_guidance {
+namespace {
+
+// A polygon to triangulate: its corners as existing vertices or new points.
+struct Corner {
+  VertexHandle vertex;  // invalid for a new point
+  Point position;
+  int new_index = -1;  // index into the new points (shared between faces)
+};
+
+struct PlannedFace {
+  int region;
+  std::vector<Corner> polygon;
+};
+
+double mean_edge_length(const Mesh& mesh, const Hole& hole) {
+  double sum = 0.0;
+  for (auto h : hole.halfedges)
+    sum += mesh.calc_edge_length(h);
+  return sum / static_cast<double>(hole.halfedges.size());
+}
+
+// New points strictly between a and b, at about `spacing`.
+std::vector<Point> interior_points(const Point& a, const Point& b, double spacing) {
+  const int pieces = std::max(1, static_cast<int>(std::round((b - a).norm() / spacing)));
+  std::vector<Point> points;
+  for (int j = 1; j < pieces; ++j)
+    points.push_back(a + (b - a) * (static_cast<double>(j) / pieces));
+  return points;
+}
+
+double bounding_box_diagonal_of_points(const Mesh& mesh,
+                                       const std::vector<VertexHandle>& vertices) {
+  Point lo = mesh.point(vertices.front()), hi = lo;
+  for (auto v : vertices) {
+    lo.minimize(mesh.point(v));
+    hi.maximize(mesh.point(v));
+  }
+  return (hi - lo).norm();
+}
+
+}  // namespace
+
+ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole) {
+  ClosingResult result;
+  const int k = hole.k();
+  const double spacing = mean_edge_length(mesh, hole);
+  std::vector<Point> new_points;
+  std::vector<PlannedFace> planned;
+  auto add_new = [&](const Point& p) {
+    new_points.push_back(p);
+    return Corner{VertexHandle(), p, static_cast<int>(new_points.size()) - 1};
+  };
+  if (k > 3 || (k == 3 && !hole.S) || (k == 2 && hole.linearly_dependent)) {
+    result.error = "only inner holes with k <= 3 and independent planes are closed";
+    return result;
+  }
+
+  // The loop's vertices in the faces' order; run i starts at transition i.
+  std::vector<VertexHandle> loop;
+  std::vector<int> run_start;
+  for (const auto& run : hole.runs) {
+    run_start.push_back(static_cast<int>(loop.size()));
+    for (auto h : run)
+      loop.push_back(mesh.from_vertex_handle(h));
+  }
+  const int n = static_cast<int>(loop.size());
+
+  if (k == 1) {
+    PlannedFace face{hole.faces[0], {}};
+    for (auto v : loop)
+      face.polygon.push_back({v, mesh.point(v)});
+    planned.push_back(std::move(face));
+  } else {
+    // Where a hole runs along the faces' common line for a while (one face's triangles are
+    // kept there, the other's removed), those edges still exist: the rebuilt edge starts
+    // where the loop leaves the line. E_i is that vertex, found from T_i forward through
+    // run i or else backward through run i-1; the loop between E_{i} and E_{i+1} is then the
+    // part face f_i extends.
+    const double tolerance = 1e-9 * std::max(1.0, bounding_box_diagonal_of_points(mesh, loop));
+    auto on_line = [&](VertexHandle v, int a, int b) {
+      const Point& p = mesh.point(v);
+      return std::abs(faces.planes[a].plane.signed_distance(p)) <= tolerance &&
+             std::abs(faces.planes[b].plane.signed_distance(p)) <= tolerance;
+    };
+    std::vector<int> split(k);
+    for (int i = 0; i < k; ++i) {
+      const int a = hole.faces[(i + k - 1) % k], b = hole.faces[i];
+      int index = run_start[i];
+      const int run_end = i + 1 < k ? run_start[i + 1] : n;
+      int forward = index;
+      while (forward + 1 < run_end && on_line(loop[forward + 1], a, b))
+        ++forward;
+      if (forward != index) {
+        split[i] = forward;
+        continue;
+      }
+      const int previous_start = run_start[(i + k - 1) % k];
+      int backward = index;
+      while (backward != previous_start && on_line(loop[(backward + n - 1) % n], a, b))
+        backward = (backward + n - 1) % n;
+      split[i] = backward;
+    }
+    // The rebuilt edges: E_i -> S (k = 3) or E_2 -> E_1 (k = 2), through new points.
+    std::vector<std::vector<Corner>> edge_points(k);  // from E_i towards the common end
+    Corner vs;
+    if (k == 3) {
+      vs = add_new(*hole.S);
+      for (int i = 0; i < 3; ++i) {
+        for (const Point& p : interior_points(mesh.point(loop[split[i]]), *hole.S, spacing)) {
+          edge_points[i].push_back(add_new(p));
+        }
+      }
+    } else {
+      for (const Point& p :
+           interior_points(mesh.point(loop[split[1]]), mesh.point(loop[split[0]]), spacing)) {
+        edge_points[1].push_back(add_new(p));  // from E_2 to E_1
+      }
+    }
+    for (int i = 0; i < k; ++i) {
+      const int next = (i + 1) % k;
+      PlannedFace face{hole.faces[i], {}};
+      // The loop from E_i to E_{i+1}, both included.
+      for (int j = split[i];; j = (j + 1) % n) {
+        face.polygon.push_back({loop[j], mesh.point(loop[j])});
+        if (j == split[next])
+          break;
+      }
+      if (k == 3) {
+        face.polygon.insert(face.polygon.end(), edge_points[next].begin(), edge_points[next].end());
+        face.polygon.push_back(vs);
+        face.polygon.insert(face.polygon.end(), edge_points[i].rbegin(), edge_points[i].rend());
+      } else if (i == 0) {
+        face.polygon.insert(face.polygon.end(), edge_points[1].begin(),
+                            edge_points[1].end());  // E_2 -> E_1
+      } else {
+        face.polygon.insert(face.polygon.end(), edge_points[1].rbegin(),
+                            edge_points[1].rend());  // E_1 -> E_2
+      }
+      planned.push_back(std::move(face));
+    }
+  }
+
+  // Triangulate every face polygon first; touch the mesh only when all succeeded.
+  std::vector<std::vector<std::array<int, 3>>> triangles;
+  for (const auto& face : planned) {
+    std::vector<Point> points;
+    for (const auto& c : face.polygon)
+      points.push_back(c.position);
+    const auto triangulation = triangulate_planar_polygon(points, faces.planes[face.region].plane);
+    if (!triangulation.ok) {
+      result.error = "face " + std::to_string(face.region) + ": " + triangulation.error;
+      return result;
+    }
+    triangles.push_back(triangulation.triangles);
+  }
+
+  const Mesh backup = mesh;
+  std::vector<VertexHandle> new_vertices;
+  for (const Point& p : new_points)
+    new_vertices.push_back(mesh.add_vertex(p));
+  for (std::size_t f = 0; f < planned.size(); ++f) {
+    const auto& polygon = planned[f].polygon;
+    auto handle = [&](int index) {
+      const Corner& c = polygon[index];
+      return c.vertex.is_valid() ? c.vertex : new_vertices[c.new_index];
+    };
+    for (const auto& t : triangles[f]) {
+      const FaceHandle added = mesh.add_face(handle(t[0]), handle(t[1]), handle(t[2]));
+      if (!added.is_valid()) {
+        mesh = backup;
+        result.error = "a closing triangle would make the mesh non-manifold";
+        return result;
+      }
+      set_region(mesh, added, planned[f].region);
+      ++result.new_faces;
+    }
+  }
+  result.new_vertices = new_points.size();
+  result.closed = true;
+  return result;
+}
+
+}  // namespace holebench::brep_guidance

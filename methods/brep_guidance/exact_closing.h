@@ -1,0 +1,33 @@
+// Section 3.3 of the B-Rep paper, automatic closing (figure 4): k = 1, the inner boundary is
+// removed and the face filled in its plane; k = 2, the missing edge is rebuilt as the
+// intersection line of the two planes and both faces are extended to it; k = 3, a new vertex
+// v_s at the intersection S of the three planes and the faces extended to it. The new edges
+// continue the faces' existing edges (the "merging of separated edges": in a triangle mesh the
+// rebuilt edge shares its end vertices with the edge it continues).
+//
+// The paper extends B-Rep faces; here each extended face's new part is a planar polygon (the
+// hole half-edges on that face, closed by the rebuilt edges) triangulated by a constrained
+// Delaunay triangulation in the face's plane. Rebuilt edges are subdivided at about the
+// hole's mean edge length, the same points on both faces that share them.
+#pragma once
+
+#include "core/mesh.h"
+#include "methods/brep_guidance/brep_faces.h"
+#include "methods/brep_guidance/hole_detection.h"
+
+#include <string>
+
+namespace holebench::brep_guidance {
+
+struct ClosingResult {
+  bool closed = false;
+  std::size_t new_faces = 0;
+  std::size_t new_vertices = 0;
+  std::string error;  ///< why the hole could not be closed
+};
+
+/// Closes `hole` (k <= 3, inner, planes not dependent) in `mesh`. New faces get the region
+/// of the face they extend. On failure the mesh is left as it was.
+ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole);
+
+}  // namespace holebench::brep_guidance

@@ -1,0 +1,51 @@
+#include "metrics/face_subset.h"
+
+#include <unordered_map>
+
+namespace holebench {
+
+Mesh face_subset(const Mesh& mesh, const std::vector<int>& faces) {
+  Mesh out;
+  std::unordered_map<int, VertexHandle> copy_of;
+  auto copy_vertex = [&](VertexHandle v) {
+    auto [it, inserted] = copy_of.try_emplace(v.idx());
+    if (inserted) {
+      it->second = out.add_vertex(mesh.point(v));
+      out.data(it->second).provenance = provenance(mesh, v);
+    }
+    return it->second;
+  };
+  for (int index : faces) {
+    const FaceHandle f = mesh.face_handle(index);
+    std::vector<VertexHandle> corners;
+    std::vector<VertexHandle> originals;
+    for (auto v : mesh.fv_range(f)) {
+      originals.push_back(v);
+      corners.push_back(copy_vertex(v));
+    }
+    FaceHandle added = out.add_face(corners);
+    if (!added.is_valid()) {
+      // Non-manifold in isolation: give the triangle vertices of its own.
+      std::vector<VertexHandle> own;
+      for (auto v : originals) {
+        own.push_back(out.add_vertex(mesh.point(v)));
+        out.data(own.back()).provenance = provenance(mesh, v);
+      }
+      added = out.add_face(own);
+    }
+    out.data(added).region = region(mesh, f);
+    out.data(added).provenance = provenance(mesh, f);
+  }
+  return out;
+}
+
+std::vector<int> new_face_indices(const Mesh& mesh) {
+  std::vector<int> faces;
+  for (auto f : mesh.faces()) {
+    if (is_new(mesh, f))
+      faces.push_back(f.idx());
+  }
+  return faces;
+}
+
+}  // namespace holebench

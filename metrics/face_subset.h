@@ -1,0 +1,20 @@
+// A mesh made of some faces of another: the region a metric is restricted to (the patch
+// of new faces, the removed faces of the complete model).
+#pragma once
+
+#include "core/mesh.h"
+
+#include <vector>
+
+namespace holebench {
+
+/// The faces `faces` (indices into `mesh`) as a mesh of their own, in the order given,
+/// with their points, regions and provenance. Faces that would make the subset
+/// non-manifold are still kept: each face gets its own three vertices where OpenMesh
+/// refuses to share them, so the subset always covers exactly the listed triangles.
+Mesh face_subset(const Mesh& mesh, const std::vector<int>& faces);
+
+/// The indices of the faces of `mesh` marked `Provenance::New`, in index order.
+std::vector<int> new_face_indices(const Mesh& mesh);
+
+}  // namespace holebench

@@ -1,0 +1,140 @@
+#include "metrics/feature_recovery.h"
+
+#include "core/geometry.h"
+#include "metrics/embree/triangle_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace holebench {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double point_segment_distance(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
+  const double length2 = ab.sqrnorm();
+  double t = length2 > 0.0 ? OpenMesh::dot(p - a, ab) / length2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return (a + ab * t - p).norm();
+}
+
+std::vector<Point> sample_polyline(const std::vector<Point>& polyline, double spacing) {
+  std::vector<Point> samples;
+  if (polyline.empty())
+    return samples;
+  samples.push_back(polyline.front());
+  for (std::size_t i = 0; i + 1 < polyline.size(); ++i) {
+    const Point& a = polyline[i];
+    const Point& b = polyline[i + 1];
+    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing)));
+    for (int s = 1; s <= steps; ++s)
+      samples.push_back(a + (b - a) * (static_cast<double>(s) / steps));
+  }
+  return samples;
+}
+
+struct Segment {
+  Point a, b;
+};
+
+}  // namespace
+
+FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
+                                 const embree::TriangleScene& complete_scene,
+                                 const FeatureRecoveryOptions& options) {
+  FeatureRecovery result;
+
+  for (const auto& hole : c.holes) {
+    for (const Point& corner : hole.missing_corners) {
+      double best = std::numeric_limits<double>::infinity();
+      for (auto v : repaired.vertices())
+        best = std::min(best, (repaired.point(v) - corner).norm());
+      result.corner_errors.push_back(best);
+    }
+  }
+
+  bool any_missing_edge = false;
+  for (const auto& hole : c.holes)
+    any_missing_edge = any_missing_edge || !hole.missing_edges.empty();
+  if (any_missing_edge) {
+    const FeatureAnalysis analysis = analyse_features(repaired, options.features);
+    std::vector<Segment> sharp;
+    for (auto e : repaired.edges()) {
+      if (analysis.edge_is_sharp[e.idx()])
+        sharp.push_back({repaired.point(e.v0()), repaired.point(e.v1())});
+    }
+    for (const auto& hole : c.holes) {
+      for (const auto& polyline : hole.missing_edges) {
+        MissingEdgeRecovery edge;
+        const auto samples = sample_polyline(polyline, options.edge_sample_spacing);
+        // Only sharp edges that can be within the search radius of the polyline.
+        BoundingBox box{polyline.front(), polyline.front()};
+        for (const Point& p : polyline) {
+          box.min.minimize(p);
+          box.max.maximize(p);
+        }
+        const Point margin(options.edge_search_radius, options.edge_search_radius,
+                           options.edge_search_radius);
+        std::vector<Segment> near;
+        for (const auto& s : sharp) {
+          Point lo = s.a, hi = s.a;
+          lo.minimize(s.b);
+          hi.maximize(s.b);
+          bool overlaps = true;
+          for (int k = 0; k < 3; ++k)
+            overlaps =
+                overlaps && lo[k] <= box.max[k] + margin[k] && hi[k] >= box.min[k] - margin[k];
+          if (overlaps)
+            near.push_back(s);
+        }
+        std::size_t covered = 0;
+        bool all_near = !samples.empty();
+        double farthest = 0.0;
+        for (const Point& p : samples) {
+          double best = std::numeric_limits<double>::infinity();
+          for (const auto& s : near)
+            best = std::min(best, point_segment_distance(p, s.a, s.b));
+          if (best <= options.edge_tolerance)
+            ++covered;
+          if (best <= options.edge_search_radius)
+            farthest = std::max(farthest, best);
+          else
+            all_near = false;
+        }
+        edge.covered_fraction =
+            samples.empty() ? 0.0 : static_cast<double>(covered) / samples.size();
+        edge.present = edge.covered_fraction >= 0.5;
+        if (all_near)
+          edge.distance = farthest;
+        result.edges.push_back(edge);
+      }
+    }
+  }
+
+  double area_sum = 0.0, weighted = 0.0, largest = 0.0;
+  for (auto f : repaired.faces()) {
+    if (!is_new(repaired, f))
+      continue;
+    const double area = face_area(repaired, f);
+    if (!(area > 0.0))
+      continue;
+    const Point n = face_normal(repaired, f);
+    const auto closest = complete_scene.closest_point(face_centroid(repaired, f));
+    const auto& t = complete_scene.triangle_of_face(closest.face);
+    Point m = OpenMesh::cross(t[1] - t[0], t[2] - t[0]);
+    m /= m.norm();
+    const double angle = std::acos(std::clamp(OpenMesh::dot(n, m), -1.0, 1.0)) * 180.0 / kPi;
+    area_sum += area;
+    weighted += area * angle;
+    largest = std::max(largest, angle);
+  }
+  if (area_sum > 0.0) {
+    result.normal_deviation_mean_deg = weighted / area_sum;
+    result.normal_deviation_max_deg = largest;
+  }
+  return result;
+}
+
+}  // namespace holebench

@@ -1,0 +1,105 @@
+// Invariants of evaluate(): names carry units, metrics that do not apply are absent, the
+// complete model scores zero distance, the unrepaired input is open and far in the hole,
+// and the same inputs give the same numbers.
+#include "metrics/evaluation.h"
+
+#include "core/boundary_loops.h"
+#include "core/geometry.h"
+#include "generators/case_catalog.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+
+namespace holebench {
+namespace {
+
+bool has(const Evaluation& e, const char* name) {
+  return e.find(name) != nullptr;
+}
+
+TEST(Evaluation, NamesCarryTheirUnit) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult result;
+  result.repaired = c.input;
+  const std::regex unit(R"(.*(_rel_diag|_deg|_count|_fraction|_s|_ok)$|^is_.*)");
+  for (const auto& v : evaluate(c, result).values)
+    EXPECT_TRUE(std::regex_match(v.name, unit)) << v.name;
+}
+
+// The complete model itself, with the removed faces playing the patch: zero distance
+// everywhere, closed, valid; no classification or arrow metrics (nothing to judge).
+TEST(Evaluation, CompleteModelScoresZero) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult result;
+  result.repaired = c.complete;
+  for (int f : c.holes[0].removed_faces)
+    result.repaired.data(result.repaired.face_handle(f)).provenance = Provenance::New;
+  const Evaluation e = evaluate(c, result);
+  for (const char* name : {"hausdorff_upper_rel_diag", "mean_distance_rel_diag",
+                           "rms_distance_rel_diag", "hole_hausdorff_upper_rel_diag",
+                           "hole_mean_distance_rel_diag", "missing_corner_error_max_rel_diag"}) {
+    ASSERT_TRUE(has(e, name)) << name;
+    EXPECT_LE(e.find(name)->value, 1e-12) << name;
+  }
+  EXPECT_EQ(e.find("is_closed")->value, 1.0);
+  EXPECT_EQ(e.find("is_manifold")->value, 1.0);
+  EXPECT_EQ(e.find("self_intersections_count")->value, 0.0);
+  EXPECT_EQ(e.find("distance_converged_ok")->value, 1.0);
+  EXPECT_FALSE(has(e, "classification_k_correct_fraction"));
+  EXPECT_FALSE(has(e, "arrow_visible_fraction"));
+}
+
+// Nothing repaired: the hole stays open; its region is as far as the hole's removed
+// surface is from the kept mesh (> 0); no new vertices, so no Table 2 error.
+TEST(Evaluation, UnrepairedInputIsOpenAndFar) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult result;
+  result.repaired = c.input;
+  const Evaluation e = evaluate(c, result);
+  EXPECT_EQ(e.find("is_closed")->value, 0.0);
+  EXPECT_EQ(e.find("open_boundary_loops_count")->value, 1.0);
+  EXPECT_GT(e.find("hole_hausdorff_rel_diag")->value, 0.0);
+  EXPECT_FALSE(has(e, "new_vertex_mean_error_rel_diag"));
+  EXPECT_FALSE(has(e, "patch_normal_deviation_mean_deg"));
+  EXPECT_EQ(e.find("original_faces_unchanged_ok")->value, 1.0);
+}
+
+// An arrow straight above a face-interior hole, and a classification: both are judged.
+TEST(Evaluation, ArrowsAndClassificationsAreJudged) {
+  const Case c = generators::make_case("brep/k1/inner/small");
+  ASSERT_TRUE(c.holes[0].labels.has_value());
+  MethodResult result;
+  result.repaired = c.input;
+  HoleReport report;
+  const auto loops = find_boundary_loops(c.input);
+  report.centroid = loop_centroid(c.input, loops[0]);
+  // The removed faces' normal (they lie in one plane).
+  const FaceHandle f = c.complete.face_handle(c.holes[0].removed_faces[0]);
+  const Point n = face_normal(c.complete, f);
+  report.arrow = GuidanceArrow{report.centroid + n * bounding_box_diagonal(c.complete), -n};
+  report.classification = c.holes[0].labels;
+  result.holes.push_back(report);
+  const Evaluation e = evaluate(c, result);
+  EXPECT_EQ(e.find("classification_all_correct_fraction")->value, 1.0);
+  EXPECT_EQ(e.find("arrow_position_outside_ok")->value, 1.0);
+  EXPECT_EQ(e.find("arrow_shaft_free_ok")->value, 1.0);
+  EXPECT_EQ(e.find("arrow_visible_fraction")->value, 1.0);
+  EXPECT_EQ(e.find("arrow_direction_error_deg")->value, 0.0);
+}
+
+TEST(Evaluation, SameInputsGiveTheSameNumbers) {
+  const Case c = generators::make_case("brep/k2/inner/convex/small");
+  MethodResult result;
+  result.repaired = c.input;
+  const Evaluation first = evaluate(c, result);
+  const Evaluation second = evaluate(c, result);
+  ASSERT_EQ(first.values.size(), second.values.size());
+  for (std::size_t i = 0; i < first.values.size(); ++i) {
+    EXPECT_EQ(first.values[i].name, second.values[i].name);
+    EXPECT_EQ(first.values[i].value, second.values[i].value) << first.values[i].name;
+  }
+}
+
+}  // namespace
+}  // namespace holebench
