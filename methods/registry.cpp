@@ -1,7 +1,9 @@
 #include "methods/registry.h"
 
 #include "methods/brep_guidance/brep_guidance.h"
+#include "methods/crest_feature/crest_feature.h"
 #include "methods/liepa_cgal/liepa_cgal.h"
+#include "methods/slice_loft/slice_loft.h"
 
 #include <stdexcept>
 
@@ -11,6 +13,9 @@ std::vector<std::unique_ptr<Method>> make_all_methods() {
   std::vector<std::unique_ptr<Method>> methods;
   methods.push_back(std::make_unique<LiepaCgalMethod>());
   methods.push_back(std::make_unique<BrepGuidanceMethod>());
+  methods.push_back(std::make_unique<SliceLoftMethod>());
+  methods.push_back(std::make_unique<SliceDirectMethod>());
+  methods.push_back(std::make_unique<CrestFeatureMethod>());
   return methods;
 }
 

@@ -1,0 +1,1 @@
+// Tests of crest_feature: written with the method.

@@ -1,0 +1,1 @@
+// Tests of slice_loft: written with the method.
