@@ -31,6 +31,10 @@ const char* to_string(JobStatus status) {
       return "invalid_input";
     case JobStatus::Error:
       return "error";
+    case JobStatus::Crash:
+      return "crash";
+    case JobStatus::Timeout:
+      return "timeout";
   }
   return "unknown";
 }
@@ -39,8 +43,16 @@ namespace {
 
 void copy_holes(const MethodResult& result, JobRecord& record) {
   for (const auto& hole : result.holes) {
-    record.holes.push_back(
-        {hole.hole_index, hole.loop_size, hole.closed, hole.new_faces, hole.note});
+    HoleRecord h;
+    h.hole_index = hole.hole_index;
+    h.loop_size = hole.loop_size;
+    h.closed = hole.closed;
+    h.new_faces = hole.new_faces;
+    h.note = hole.note;
+    h.centroid = hole.centroid;
+    h.arrow = hole.arrow;
+    h.classification = hole.classification;
+    record.holes.push_back(std::move(h));
   }
 }
 

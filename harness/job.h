@@ -30,6 +30,8 @@ enum class JobStatus {
   MethodFailed,  ///< the method returned a failure status
   InvalidInput,  ///< the case could not be generated or read
   Error,         ///< an exception escaped the method or a metric
+  Crash,         ///< the job's process died (a signal: segmentation fault, abort, ...)
+  Timeout,       ///< the job ran past the time limit and was stopped
 };
 const char* to_string(JobStatus status);
 
@@ -39,6 +41,9 @@ struct HoleRecord {
   bool closed = false;
   std::size_t new_faces = 0;
   std::string note;
+  Point centroid{0, 0, 0};
+  std::optional<GuidanceArrow> arrow;      ///< the method's guidance arrow, if any
+  std::optional<HoleLabels> classification;  ///< the method's classification, if any
 };
 
 struct JobRecord {

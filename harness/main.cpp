@@ -3,7 +3,9 @@
 #include "harness/case_export.h"
 #include "harness/case_gallery.h"
 #include "harness/case_selection.h"
+#include "harness/results_reader.h"
 #include "harness/run_command.h"
+#include "harness/suite.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
@@ -128,10 +130,16 @@ int main(int argc, char** argv) {
   add_catalog_options(cases_gallery_cmd, catalog_options, no_cad);
 
   holebench::harness::RunOptions run_options;
-  auto* run = app.add_subcommand("run", "Run cases x methods x noise x seeds into a folder");
+  std::string suite_name;
+  auto* run = app.add_subcommand(
+      "run", "Run a suite (or cases x methods x users x noise x seeds) into a folder; each job in "
+             "its own process, in parallel");
   run->add_option("--out", run_options.out_dir, "Output folder (created if missing)")->required();
+  run->add_option("--suite", suite_name,
+                  "Suite name (suites/<name>.json: smoke, default, nightly, paper) or path; the "
+                  "options below, where given, override it");
   run->add_option("--case", run_options.case_patterns,
-                  "Case id or pattern, repeatable (default: box/*, brep/*, solid/*/small)");
+                  "Case id or pattern, repeatable (default: the default suite's)");
   run->add_option("--method", run_options.method_ids, "Method id, repeatable (default: all)");
   run->add_option("--noise", run_options.noise_levels,
                   "Noise level in % of 1 % of the diagonal, repeatable (default: 0)")
@@ -142,11 +150,28 @@ int main(int argc, char** argv) {
                   "ground truth); repeatable");
   bool no_snapshots = false;
   run->add_flag("--no-snapshots", no_snapshots, "Do not render a PNG per job");
+  int workers = 0;
+  run->add_option("--workers,-j", workers, "Jobs at once (default: the number of cores)")
+      ->check(CLI::NonNegativeNumber);
+  double timeout = -1.0;
+  run->add_option("--timeout", timeout, "Seconds a job may take before it is stopped (default: the suite's, 300)")
+      ->check(CLI::NonNegativeNumber);
+  bool resume = false;
+  run->add_flag("--resume", resume, "Keep the records already in DIR/records.jsonl and run the rest");
   run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
                   "Error bound of the Hausdorff distance, relative to the diagonal")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   add_catalog_options(run, run_options.catalog, no_cad);
+
+  std::vector<std::filesystem::path> merge_inputs;
+  std::filesystem::path merge_out;
+  auto* merge = app.add_subcommand("merge", "Join results files (matched by job id; later files win)");
+  merge->add_option("inputs", merge_inputs, "results.json files")->required()->check(CLI::ExistingFile);
+  merge->add_option("--out", merge_out, "Output folder for the merged results.json and results.csv")
+      ->required();
+
+  auto* suites = app.add_subcommand("suites", "List the suites (suites/*.json)");
 
   CLI11_PARSE(app, argc, argv);
   try {
@@ -180,10 +205,49 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (run->parsed()) {
-      run_options.snapshots = !no_snapshots;
-      run_options.catalog.include_cad = !no_cad;
-      const auto summary = holebench::harness::run_jobs(run_options);
+      holebench::harness::RunOptions options = run_options;
+      // A suite gives the defaults; options given on the command line override them.
+      if (!suite_name.empty() || run_options.case_patterns.empty()) {
+        options = holebench::harness::run_options_from_suite(
+            holebench::harness::load_suite(suite_name.empty() ? "default" : suite_name));
+        if (!run_options.case_patterns.empty()) options.case_patterns = run_options.case_patterns;
+        if (!run_options.method_ids.empty()) options.method_ids = run_options.method_ids;
+        if (run->count("--noise")) options.noise_levels = run_options.noise_levels;
+        if (run->count("--seed")) options.seeds = run_options.seeds;
+        if (run->count("--user")) options.users = run_options.users;
+        if (run->count("--hausdorff-error-bound")) {
+          options.evaluation.hausdorff_error_bound_rel_diag = run_options.evaluation.hausdorff_error_bound_rel_diag;
+        }
+        options.out_dir = run_options.out_dir;
+      }
+      options.catalog.user_meshes = run_options.catalog.user_meshes;
+      if (run->count("--cad-dir")) options.catalog.cad_data_dir = run_options.catalog.cad_data_dir;
+      if (no_cad) options.catalog.include_cad = false;
+      options.snapshots = !no_snapshots;
+      options.runner.workers = workers;
+      if (timeout >= 0.0) options.runner.timeout_seconds = timeout;
+      options.runner.resume = resume;
+      const auto summary = holebench::harness::run_jobs(options);
       print_summary_table(summary);
+      return 0;
+    }
+    if (merge->parsed()) {
+      std::vector<holebench::harness::ResultsData> sets;
+      for (const auto& path : merge_inputs) sets.push_back(holebench::harness::read_results_json(path));
+      const auto merged = holebench::harness::merge_results(sets);
+      std::filesystem::create_directories(merge_out);
+      auto context = merged.context;
+      holebench::harness::write_results_json(merge_out / "results.json", context, merged.records);
+      holebench::harness::write_results_csv(merge_out / "results.csv", merged.records);
+      std::fprintf(stderr, "%zu records from %zu files into %s\n", merged.records.size(), sets.size(),
+                   (merge_out / "results.json").c_str());
+      return 0;
+    }
+    if (suites->parsed()) {
+      for (const auto& name : holebench::harness::list_suites()) {
+        const auto suite = holebench::harness::load_suite(name);
+        fmt::print("{:<10} {}\n", name, suite.description);
+      }
       return 0;
     }
   } catch (const std::exception& e) {

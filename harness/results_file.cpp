@@ -1,5 +1,6 @@
 #include "harness/results_file.h"
 
+#include "harness/record_json.h"
 #include "harness/render/image.h"
 #include "holebench/version.h"
 
@@ -47,55 +48,6 @@ RunContext current_context(const std::string& suite) {
 
 namespace {
 
-nlohmann::ordered_json to_json(const RunContext& context) {
-  nlohmann::ordered_json j;
-  j["schema_version"] = context.schema_version;
-  j["code_version"] = context.code_version;
-  j["build_type"] = context.build_type;
-  j["host"] = context.host;
-  j["created_utc"] = context.created_utc;
-  j["suite"] = context.suite;
-  nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
-  for (const auto& [name, version] : context.libraries)
-    libraries[name] = version;
-  j["libraries"] = libraries;
-  return j;
-}
-
-nlohmann::ordered_json to_json(const JobRecord& record) {
-  nlohmann::ordered_json j;
-  j["job_id"] = record.job.id();
-  j["case_id"] = record.job.case_id;
-  j["method"] = record.job.method_id;
-  j["seed"] = record.job.seed;
-  j["case_family"] = record.case_family;
-  j["case_kind"] = record.case_kind;
-  j["noise_percent"] = record.job.noise_percent;
-  j["user"] = record.user;
-  j["user_interventions"] = record.user_interventions;
-  j["status"] = to_string(record.status);
-  j["message"] = record.message;
-  nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
-  for (const auto& metric : record.metrics)
-    metrics[metric.name] = metric.value;
-  j["metrics"] = metrics;
-  nlohmann::ordered_json phases = nlohmann::ordered_json::object();
-  for (const auto& phase : record.phases)
-    phases[phase.phase + "_s"] = phase.seconds;
-  j["phases"] = phases;
-  nlohmann::ordered_json holes = nlohmann::ordered_json::array();
-  for (const auto& hole : record.holes) {
-    holes.push_back({{"hole_index", hole.hole_index},
-                     {"loop_size", hole.loop_size},
-                     {"closed", hole.closed},
-                     {"new_faces", hole.new_faces},
-                     {"note", hole.note}});
-  }
-  j["holes"] = holes;
-  j["snapshot"] = record.snapshot;
-  return j;
-}
-
 std::ofstream open_for_writing(const std::filesystem::path& path) {
   std::ofstream out(path, std::ios::binary);
   if (!out)
@@ -120,10 +72,10 @@ std::string csv_field(const std::string& text) {
 void write_results_json(const std::filesystem::path& path, const RunContext& context,
                         const std::vector<JobRecord>& records) {
   nlohmann::ordered_json j;
-  j["context"] = to_json(context);
+  j["context"] = context_to_json(context);
   j["results"] = nlohmann::ordered_json::array();
   for (const auto& record : records)
-    j["results"].push_back(to_json(record));
+    j["results"].push_back(record_to_json(record));
   auto out = open_for_writing(path);
   out << j.dump(2) << '\n';
   if (!out)

@@ -41,12 +41,26 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
   return jobs;
 }
 
+RunOptions run_options_from_suite(const Suite& suite) {
+  RunOptions options;
+  options.case_patterns = suite.case_patterns;
+  options.method_ids = suite.methods;
+  options.users = suite.users;
+  options.noise_levels = suite.noise_levels;
+  options.seeds = suite.seeds;
+  options.catalog.include_cad = suite.include_cad;
+  options.evaluation = suite.evaluation;
+  options.runner.timeout_seconds = suite.timeout_seconds;
+  options.suite_name = suite.name;
+  return options;
+}
+
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   generators::CatalogOptions catalog_options = options.catalog;
   if (catalog_options.families.empty()) {
-    catalog_options.families = families_of_patterns(
-        options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+    catalog_options.families =
+        families_of_patterns(options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
   }
   const generators::CaseCatalog catalog(catalog_options);
   const std::vector<Job> jobs = plan_jobs(options, catalog);
@@ -58,25 +72,25 @@ RunSummary run_jobs(const RunOptions& options) {
     job_options.snapshot_dir = options.out_dir / "snapshots";
     std::filesystem::create_directories(job_options.snapshot_dir);
   }
+  for (const auto& skipped : catalog.skipped()) {
+    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(), skipped.reason.c_str());
+  }
 
   RunSummary summary;
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    const auto job_start = std::chrono::steady_clock::now();
-    JobRecord record = run_job(jobs[i], job_options);
-    if (record.status != JobStatus::Ok)
-      ++summary.failures;
-    if (options.progress) {
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - job_start).count();
-      std::fprintf(stderr, "[%zu/%zu] %-56s %-8s %.2fs%s%s\n", i + 1, jobs.size(),
-                   jobs[i].id().c_str(), to_string(record.status), seconds,
-                   record.message.empty() ? "" : "  ", record.message.c_str());
+  const JobFunction run_one = [&](const Job& job) { return run_job(job, job_options); };
+  if (options.in_process) {
+    for (const auto& job : jobs) {
+      summary.records.push_back(run_one(job));
+      if (summary.records.back().status != JobStatus::Ok) ++summary.failures;
     }
-    summary.records.push_back(std::move(record));
+  } else {
+    RunnerResult result = run_isolated(jobs, run_one, options.out_dir / "records.jsonl", options.runner);
+    summary.records = std::move(result.records);
+    summary.failures = result.failures;
   }
   summary.results_json = options.out_dir / "results.json";
   summary.results_csv = options.out_dir / "results.csv";
-  write_results_json(summary.results_json, current_context("skeleton"), summary.records);
+  write_results_json(summary.results_json, current_context(options.suite_name), summary.records);
   write_results_csv(summary.results_csv, summary.records);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

@@ -2,6 +2,8 @@
 #pragma once
 
 #include "harness/job.h"
+#include "harness/runner.h"
+#include "harness/suite.h"
 
 #include <filesystem>
 #include <string>
@@ -19,9 +21,15 @@ struct RunOptions {
   std::vector<std::uint64_t> seeds{0};
   generators::CatalogOptions catalog;
   bool snapshots = true;
-  bool progress = true;  ///< a line per job on stderr
   EvaluationOptions evaluation;
+  std::string suite_name = "ad hoc";  ///< written into the results' context
+  RunnerOptions runner;               ///< workers, timeout, resume, progress
+  /// Run each job in this process instead of a child process (tests; no isolation).
+  bool in_process = false;
 };
+
+/// The run options of a suite (its cases, methods, users, noise levels, seeds, options).
+RunOptions run_options_from_suite(const Suite& suite);
 
 struct RunSummary {
   std::vector<JobRecord> records;
@@ -35,8 +43,8 @@ struct RunSummary {
 /// Throws std::invalid_argument for an unknown case or method id.
 std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog);
 
-/// Runs the jobs one after another and writes results.json, results.csv and snapshots/
-/// into `options.out_dir`.
+/// Runs the jobs (isolated, in parallel: harness/runner.h) and writes records.jsonl (as jobs
+/// finish), results.json, results.csv and snapshots/ into `options.out_dir`.
 RunSummary run_jobs(const RunOptions& options);
 
 }  // namespace holebench::harness

@@ -4,10 +4,11 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_2.h>
 
 #include <cmath>
 #include <list>
+#include <map>
 
 namespace holebench {
 namespace {
@@ -16,7 +17,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 struct FaceInfo {
   int nesting = -1;  // -1: not yet visited; odd: inside the polygon
 };
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using VertexBase = CGAL::Triangulation_vertex_base_2<Kernel>;
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<
     Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
@@ -77,6 +78,8 @@ PolygonTriangulation triangulate_planar_polygon(const std::vector<Point>& outer,
   loops.insert(loops.end(), inner.begin(), inner.end());
   try {
     Cdt cdt;
+    // Input points are numbered in a map (a vertex's info is not initialised by CGAL).
+    std::map<Cdt::Vertex_handle, int> number;
     int index = 0;
     for (const auto& loop : loops) {
       if (loop.size() < 3) {
@@ -87,12 +90,11 @@ PolygonTriangulation triangulate_planar_polygon(const std::vector<Point>& outer,
       for (const Point& p : loop) {
         const Point d = p - plane.point;
         auto h = cdt.insert(Kernel::Point_2(OpenMesh::dot(d, u), OpenMesh::dot(d, v)));
-        if (h->info() != 0 && h->info() != index + 1) {
+        if (!number.emplace(h, index).second) {
           // Two input points project onto one: the projection is not a simple polygon.
           result.error = "two points of the polygon project onto the same point";
           return result;
         }
-        h->info() = index + 1;  // 0 is "not an input point"
         handles.push_back(h);
         ++index;
       }
@@ -106,12 +108,12 @@ PolygonTriangulation triangulate_planar_polygon(const std::vector<Point>& outer,
         continue;
       std::array<int, 3> tri{};
       for (int i = 0; i < 3; ++i) {
-        const int info = f->vertex(i)->info();
-        if (info == 0) {
+        const auto it = number.find(f->vertex(i));
+        if (it == number.end()) {
           result.error = "the triangulation needed a point that is not on the polygon";
           return result;
         }
-        tri[i] = info - 1;
+        tri[i] = it->second;
       }
       result.triangles.push_back(tri);  // CGAL faces are counter-clockwise in (u, v)
     }

@@ -31,7 +31,7 @@ TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
   options.case_patterns = {"box/*"};
   options.method_ids = {"liepa_cgal"};
   options.catalog.include_cad = false;
-  options.progress = false;
+  options.runner.progress = false;
   const RunSummary summary = run_jobs(options);
   ASSERT_EQ(summary.records.size(), 3u);
   EXPECT_EQ(summary.failures, 0u);
@@ -88,7 +88,7 @@ TEST(SkeletonEndToEnd, SameInputsGiveTheSameRecords) {
   options.method_ids = {"liepa_cgal"};
   options.catalog.include_cad = false;
   options.snapshots = false;
-  options.progress = false;
+  options.runner.progress = false;
   options.out_dir = fresh_dir("repeat_a");
   const auto first = run_jobs(options);
   options.out_dir = fresh_dir("repeat_b");

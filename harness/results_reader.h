@@ -1,0 +1,34 @@
+// Reading results files back (results.json as written by results_file.h, or records.jsonl
+// as the runner appends them), for merge, compare, report and figures.
+#pragma once
+
+#include "harness/job.h"
+#include "harness/results_file.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace holebench::harness {
+
+struct ResultsData {
+  RunContext context;
+  std::vector<JobRecord> records;
+};
+
+/// Reads a results.json. Unknown fields are ignored; a missing field takes its default.
+/// Throws InvalidInputError naming the file for unreadable or malformed content.
+ResultsData read_results_json(const std::filesystem::path& path);
+
+/// One record from its JSON object (as written by write_results_json).
+JobRecord record_from_json_text(const std::string& json_text);
+
+/// The JSON text of one record (one line, as the runner appends it to records.jsonl).
+std::string record_to_json_line(const JobRecord& record);
+
+/// Merges result sets: records matched by job id; a later set's record replaces an earlier
+/// one with the same id. The context is the first set's, with `suite` kept and the merge
+/// noted. Records are ordered by job id.
+ResultsData merge_results(const std::vector<ResultsData>& sets);
+
+}  // namespace holebench::harness

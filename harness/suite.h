@@ -1,0 +1,57 @@
+// Named suites: which cases, methods, users, noise levels and seeds a run covers, with
+// which options, and the tolerances `holebench compare` judges regressions by. Suites are
+// JSON files in suites/ (suites/<name>.json), reviewed like code.
+#pragma once
+
+#include "generators/case_catalog.h"
+#include "metrics/evaluation.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace holebench::harness {
+
+/// How much a metric may move before a change counts as a regression.
+struct MetricTolerance {
+  bool lower_is_better = true;  ///< false: higher is better (fractions of correct answers, ...)
+  double relative = 0.05;       ///< allowed change relative to |old|
+  double absolute = 1e-9;       ///< allowed change in the metric's own unit (guards old = 0)
+};
+
+struct Tolerances {
+  MetricTolerance default_tolerance;
+  std::map<std::string, MetricTolerance> metrics;  ///< by metric name; others use the default
+  /// Metrics never judged (timings vary from machine to machine).
+  std::vector<std::string> ignored{"time_method_s"};
+
+  const MetricTolerance* find(const std::string& metric) const;  ///< nullptr if ignored
+};
+
+struct Suite {
+  std::string name;
+  std::string description;
+  std::vector<std::string> case_patterns;
+  std::vector<std::string> methods;  ///< empty: all
+  std::vector<std::string> users{"no_user"};
+  std::vector<double> noise_levels{0.0};
+  std::vector<std::uint64_t> seeds{0};
+  bool include_cad = true;
+  double timeout_seconds = 300.0;  ///< per job
+  EvaluationOptions evaluation;
+  Tolerances tolerances;
+};
+
+/// The folder holding the suite files: $HOLEBENCH_SUITES_DIR if set, else the source tree's
+/// suites/ (compiled in).
+std::filesystem::path default_suites_dir();
+
+/// Reads suite `name_or_path`: a path to a .json file, or a name looked up as
+/// <suites_dir>/<name>.json. Throws InvalidInputError with the file and the field on error.
+Suite load_suite(const std::string& name_or_path, const std::filesystem::path& suites_dir = default_suites_dir());
+
+/// The names of the suites in `suites_dir`, sorted.
+std::vector<std::string> list_suites(const std::filesystem::path& suites_dir = default_suites_dir());
+
+}  // namespace holebench::harness
