@@ -3,6 +3,8 @@
 #include "harness/case_export.h"
 #include "harness/case_gallery.h"
 #include "harness/case_selection.h"
+#include "harness/compare.h"
+#include "harness/report/report.h"
 #include "harness/results_reader.h"
 #include "harness/run_command.h"
 #include "harness/suite.h"
@@ -132,8 +134,9 @@ int main(int argc, char** argv) {
   holebench::harness::RunOptions run_options;
   std::string suite_name;
   auto* run = app.add_subcommand(
-      "run", "Run a suite (or cases x methods x users x noise x seeds) into a folder; each job in "
-             "its own process, in parallel");
+      "run",
+      "Run a suite (or cases x methods x users x noise x seeds) into a folder; each job in "
+      "its own process, in parallel");
   run->add_option("--out", run_options.out_dir, "Output folder (created if missing)")->required();
   run->add_option("--suite", suite_name,
                   "Suite name (suites/<name>.json: smoke, default, nightly, paper) or path; the "
@@ -154,10 +157,12 @@ int main(int argc, char** argv) {
   run->add_option("--workers,-j", workers, "Jobs at once (default: the number of cores)")
       ->check(CLI::NonNegativeNumber);
   double timeout = -1.0;
-  run->add_option("--timeout", timeout, "Seconds a job may take before it is stopped (default: the suite's, 300)")
+  run->add_option("--timeout", timeout,
+                  "Seconds a job may take before it is stopped (default: the suite's, 300)")
       ->check(CLI::NonNegativeNumber);
   bool resume = false;
-  run->add_flag("--resume", resume, "Keep the records already in DIR/records.jsonl and run the rest");
+  run->add_flag("--resume", resume,
+                "Keep the records already in DIR/records.jsonl and run the rest");
   run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
                   "Error bound of the Hausdorff distance, relative to the diagonal")
       ->capture_default_str()
@@ -166,12 +171,34 @@ int main(int argc, char** argv) {
 
   std::vector<std::filesystem::path> merge_inputs;
   std::filesystem::path merge_out;
-  auto* merge = app.add_subcommand("merge", "Join results files (matched by job id; later files win)");
-  merge->add_option("inputs", merge_inputs, "results.json files")->required()->check(CLI::ExistingFile);
+  auto* merge =
+      app.add_subcommand("merge", "Join results files (matched by job id; later files win)");
+  merge->add_option("inputs", merge_inputs, "results.json files")
+      ->required()
+      ->check(CLI::ExistingFile);
   merge->add_option("--out", merge_out, "Output folder for the merged results.json and results.csv")
       ->required();
 
   auto* suites = app.add_subcommand("suites", "List the suites (suites/*.json)");
+
+  std::filesystem::path compare_base, compare_new, junit_path;
+  std::string compare_suite = "nightly";
+  auto* compare = app.add_subcommand(
+      "compare", "Compare two results files job by job; exit code 1 on a regression");
+  compare->add_option("base", compare_base, "Baseline results.json")
+      ->required()
+      ->check(CLI::ExistingFile);
+  compare->add_option("new", compare_new, "New results.json")->required()->check(CLI::ExistingFile);
+  compare->add_option("--suite", compare_suite, "Suite whose tolerances judge regressions")
+      ->capture_default_str();
+  compare->add_option("--junit", junit_path, "Also write a JUnit XML file for CI dashboards");
+
+  std::filesystem::path report_dir;
+  auto* report = app.add_subcommand(
+      "report", "Write DIR/report/: summary tables (Markdown, CSV, LaTeX), plots and an HTML page");
+  report->add_option("dir", report_dir, "A run's output folder (with results.json)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
 
   CLI11_PARSE(app, argc, argv);
   try {
@@ -210,22 +237,31 @@ int main(int argc, char** argv) {
       if (!suite_name.empty() || run_options.case_patterns.empty()) {
         options = holebench::harness::run_options_from_suite(
             holebench::harness::load_suite(suite_name.empty() ? "default" : suite_name));
-        if (!run_options.case_patterns.empty()) options.case_patterns = run_options.case_patterns;
-        if (!run_options.method_ids.empty()) options.method_ids = run_options.method_ids;
-        if (run->count("--noise")) options.noise_levels = run_options.noise_levels;
-        if (run->count("--seed")) options.seeds = run_options.seeds;
-        if (run->count("--user")) options.users = run_options.users;
+        if (!run_options.case_patterns.empty())
+          options.case_patterns = run_options.case_patterns;
+        if (!run_options.method_ids.empty())
+          options.method_ids = run_options.method_ids;
+        if (run->count("--noise"))
+          options.noise_levels = run_options.noise_levels;
+        if (run->count("--seed"))
+          options.seeds = run_options.seeds;
+        if (run->count("--user"))
+          options.users = run_options.users;
         if (run->count("--hausdorff-error-bound")) {
-          options.evaluation.hausdorff_error_bound_rel_diag = run_options.evaluation.hausdorff_error_bound_rel_diag;
+          options.evaluation.hausdorff_error_bound_rel_diag =
+              run_options.evaluation.hausdorff_error_bound_rel_diag;
         }
         options.out_dir = run_options.out_dir;
       }
       options.catalog.user_meshes = run_options.catalog.user_meshes;
-      if (run->count("--cad-dir")) options.catalog.cad_data_dir = run_options.catalog.cad_data_dir;
-      if (no_cad) options.catalog.include_cad = false;
+      if (run->count("--cad-dir"))
+        options.catalog.cad_data_dir = run_options.catalog.cad_data_dir;
+      if (no_cad)
+        options.catalog.include_cad = false;
       options.snapshots = !no_snapshots;
       options.runner.workers = workers;
-      if (timeout >= 0.0) options.runner.timeout_seconds = timeout;
+      if (timeout >= 0.0)
+        options.runner.timeout_seconds = timeout;
       options.runner.resume = resume;
       const auto summary = holebench::harness::run_jobs(options);
       print_summary_table(summary);
@@ -233,14 +269,32 @@ int main(int argc, char** argv) {
     }
     if (merge->parsed()) {
       std::vector<holebench::harness::ResultsData> sets;
-      for (const auto& path : merge_inputs) sets.push_back(holebench::harness::read_results_json(path));
+      for (const auto& path : merge_inputs)
+        sets.push_back(holebench::harness::read_results_json(path));
       const auto merged = holebench::harness::merge_results(sets);
       std::filesystem::create_directories(merge_out);
       auto context = merged.context;
       holebench::harness::write_results_json(merge_out / "results.json", context, merged.records);
       holebench::harness::write_results_csv(merge_out / "results.csv", merged.records);
-      std::fprintf(stderr, "%zu records from %zu files into %s\n", merged.records.size(), sets.size(),
-                   (merge_out / "results.json").c_str());
+      std::fprintf(stderr, "%zu records from %zu files into %s\n", merged.records.size(),
+                   sets.size(), (merge_out / "results.json").c_str());
+      return 0;
+    }
+    if (compare->parsed()) {
+      const auto suite = holebench::harness::load_suite(compare_suite);
+      const auto comparison = holebench::harness::compare_results(
+          holebench::harness::read_results_json(compare_base),
+          holebench::harness::read_results_json(compare_new), suite.tolerances);
+      holebench::harness::print_comparison(comparison, stdout);
+      if (!junit_path.empty())
+        holebench::harness::write_junit_xml(comparison, junit_path);
+      return comparison.has_regression() ? 1 : 0;
+    }
+    if (report->parsed()) {
+      const auto data = holebench::harness::read_results_json(report_dir / "results.json");
+      const auto summary = holebench::harness::report::write_report(data, report_dir);
+      fmt::print("{}", holebench::harness::report::console_summary(data));
+      fmt::print("\nReport: {}\n", (summary.dir / "report.html").string());
       return 0;
     }
     if (suites->parsed()) {

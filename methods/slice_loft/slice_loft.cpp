@@ -1,20 +1,153 @@
 #include "methods/slice_loft/slice_loft.h"
 
+#include <chrono>
+#include <sstream>
+
 namespace holebench {
 
-MethodResult SliceLoftMethod::run(const Mesh& holed, const MethodParameters&, User&) const {
-  MethodResult result;
-  result.repaired = holed;
-  result.status = MethodStatus::Failed;
-  result.message = "slice_loft is not implemented yet";
-  return result;
+namespace slice_loft {
+const char* to_string(HoleType type) {
+  switch (type) {
+    case HoleType::SingleSegment:
+      return "single-segment";
+    case HoleType::MultiSegmentOrdinary:
+      return "multi-segment";
+    case HoleType::MultiSegmentCorner:
+      return "multi-segment corner";
+  }
+  return "?";
+}
+}  // namespace slice_loft
+
+namespace {
+
+using namespace slice_loft;
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-MethodResult SliceDirectMethod::run(const Mesh& holed, const MethodParameters&, User&) const {
+struct PhaseClock {
+  double identification = 0, segmentation = 0, features = 0, surface = 0, sewing = 0;
+};
+
+// Steps IV-VI for one decomposition of a hole. Empty string on success.
+std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, const Hole& hole,
+                 const MissingFeatures& features, const std::vector<int>& face_region,
+                 const SliceLoftOptions& options, PhaseClock& clock, SewingResult& sewn,
+                 bool use_regions) {
+  auto start = Clock::now();
+  std::vector<Portion> portions = hole_portions(holed, found.contours, hole, features, face_region);
+  if (!use_regions) {
+    for (auto& portion : portions)
+      portion.region = kNoRegion;
+  }
+  std::vector<LoftedPatch> patches;
+  for (const auto& portion : portions) {
+    patches.push_back(loft_portion(holed, hole, portion, face_region, options.surface));
+    if (!patches.back().ok) {
+      clock.surface += seconds_since(start);
+      return "composite surface: " + patches.back().error;
+    }
+  }
+  clock.surface += seconds_since(start);
+  start = Clock::now();
+  std::vector<PatchTessellation> tessellations;
+  for (std::size_t p = 0; p < portions.size(); ++p) {
+    tessellations.push_back(tessellate_trimmed_patch(portions[p], patches[p], hole.mean_edge_length,
+                                                     options.tessellation));
+    if (!tessellations.back().ok) {
+      clock.sewing += seconds_since(start);
+      return "trimming: " + tessellations.back().error;
+    }
+  }
+  sewn = sew_patches(mesh, portions, tessellations, features);
+  clock.sewing += seconds_since(start);
+  return sewn.ok ? std::string() : "sewing: " + sewn.error;
+}
+
+}  // namespace
+
+MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) {
   MethodResult result;
   result.repaired = holed;
-  result.status = MethodStatus::Failed;
-  result.message = "slice_direct is not implemented yet";
+  PhaseClock clock;
+
+  auto start = Clock::now();
+  HolesAndIslands found = identify_holes_and_islands(holed, options.identification);
+  clock.identification = seconds_since(start);
+
+  start = Clock::now();
+  const std::vector<int> face_region = segment_mesh_regions(holed, options.segmentation);
+  clock.segmentation = seconds_since(start);
+
+  std::size_t closed = 0;
+  for (std::size_t i = 0; i < found.holes.size(); ++i) {
+    const auto hole_start = Clock::now();
+    Hole& hole = found.holes[i];
+    HoleReport report;
+    report.hole_index = static_cast<int>(i);
+    report.loop_size = hole.boundary.size();
+    report.centroid = loop_centroid(holed, found.contours[hole.contour].loop);
+    std::ostringstream note;
+
+    start = Clock::now();
+    segment_hole_boundary(holed, face_region, hole, options.segmentation);
+    clock.segmentation += seconds_since(start);
+    note << to_string(hole.type) << " hole, " << hole.segments.size() << " segment(s), "
+         << hole.islands.size() << " island(s)";
+    if (hole.orphan_island)
+      note << ", an island contour no hole claimed (filled as a hole)";
+
+    start = Clock::now();
+    MissingFeatures features;
+    if (hole.segments.size() >= 2) {
+      MissingFeatureOptions feature_options = options.features;
+      feature_options.segmentation = options.segmentation;
+      features = reconstruct_missing_features(holed, hole, feature_options);
+    }
+    clock.features += seconds_since(start);
+    if (!features.edges.empty()) {
+      note << "; " << (features.through_edge ? 1 : features.edges.size()) << " missing edge(s)"
+           << (features.corner >= 0 ? " and a missing corner" : "");
+    } else if (!features.note.empty()) {
+      note << "; missing features not rebuilt: " << features.note;
+    }
+
+    SewingResult sewn;
+    std::string error = fill(result.repaired, holed, found, hole, features, face_region, options,
+                             clock, sewn, true);
+    if (!error.empty()) {
+      // Fall back: the whole hole as one portion, slicing every influencing triangle.
+      note << "; " << error << "; filled as one portion without features";
+      const MissingFeatures none;
+      error =
+          fill(result.repaired, holed, found, hole, none, face_region, options, clock, sewn, false);
+      if (!error.empty())
+        note << "; failed again: " << error;
+    }
+    report.closed = error.empty();
+    report.new_faces = sewn.new_faces;
+    report.new_vertices = sewn.new_vertices;
+    report.note = note.str();
+    report.seconds = seconds_since(hole_start);
+    closed += report.closed ? 1 : 0;
+    result.holes.push_back(std::move(report));
+  }
+
+  result.phases = {
+      {"I holes and islands (4.1)", clock.identification},
+      {"II segmentation of the hole boundary (4.2)", clock.segmentation},
+      {"III missing features (4.3, eqs. 1-3)", clock.features},
+      {"IV composite surface (4.4)", clock.surface},
+      {"V-VI trimming, faceting and sewing (4.5-4.6)", clock.sewing},
+  };
+  const std::size_t n = found.holes.size();
+  result.status = closed == n   ? MethodStatus::Ok
+                  : closed == 0 ? MethodStatus::Failed
+                                : MethodStatus::Partial;
+  if (closed != n)
+    result.message = std::to_string(n - closed) + " of " + std::to_string(n) + " holes left open";
   return result;
 }
 

@@ -1,30 +1,69 @@
-// Method slice_loft: section 4 of "Slice-based feature-preserving hole filling"
-// (../shared/papers/slice-based-feature-preserving-hole-filling.txt). Being written.
+// Method slice_loft: section 4 of "A slice-based algorithm for automatic and
+// feature-preserving hole-filling in a CAD mesh model" (Adhikary and Gurumoorthy;
+// ../shared/papers/slice-based-feature-preserving-hole-filling.txt), steps I-VI:
+//   I   holes and islands (4.1)          holes_and_islands.h
+//   II  segmentation of the boundary (4.2) boundary_segmentation.h
+//   III missing features (4.3)            missing_features.h (eqs. 1-3: discrete_curvature.h)
+//   IV  composite surface (4.4)           composite_surface.h
+//   V   trimming, VI faceting and sewing  trimming_and_sewing.h
+// and its comparison slice_direct (Table 2, right column): the same section points faceted
+// directly, without the lofted surface. See docs/slice_loft.md.
 #pragma once
 
 #include "methods/method.h"
+#include "methods/slice_loft/boundary_segmentation.h"
+#include "methods/slice_loft/composite_surface.h"
+#include "methods/slice_loft/holes_and_islands.h"
+#include "methods/slice_loft/missing_features.h"
+#include "methods/slice_loft/trimming_and_sewing.h"
 
 namespace holebench {
 
+struct SliceLoftOptions {
+  slice_loft::HoleIdentificationOptions identification;  ///< step I
+  slice_loft::BoundarySegmentationOptions segmentation;  ///< step II (thresholds)
+  slice_loft::MissingFeatureOptions features;            ///< step III
+  slice_loft::CompositeSurfaceOptions surface;           ///< step IV
+  slice_loft::TessellationOptions tessellation;          ///< steps V-VI (direct: slice_direct)
+};
+
+/// Fills every hole of `holed` (with its islands). A hole that cannot be filled with its
+/// missing features is filled as one portion without them; one that cannot be filled at
+/// all is left open; each hole's report says which (status Partial / Failed). Never throws
+/// for a geometric failure.
+MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options = {});
+
 class SliceLoftMethod final : public Method {
  public:
+  explicit SliceLoftMethod(SliceLoftOptions options = {}) : options_(options) {}
   std::string id() const override { return "slice_loft"; }
   std::string description() const override {
-    return "slice paper: slice-based, feature-preserving fill (not yet implemented)";
+    return "slice paper: segmented boundary, missing edges and corner traced with curvature "
+           "continuity, slice sections lofted, trimmed and faceted";
   }
-  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override;
+  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
+    return run_slice_loft(holed, options_);
+  }
+
+ private:
+  SliceLoftOptions options_;
 };
 
 /// The slice paper's comparison (Table 2, right column): "direct tessellation of the discrete
 /// points generated from the slice sections".
 class SliceDirectMethod final : public Method {
  public:
+  SliceDirectMethod() { options_.tessellation.direct = true; }
   std::string id() const override { return "slice_direct"; }
   std::string description() const override {
-    return "slice paper's comparison: direct tessellation of the slice points (not yet "
-           "implemented)";
+    return "slice paper's comparison: direct tessellation of the slice section points";
   }
-  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override;
+  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
+    return run_slice_loft(holed, options_);
+  }
+
+ private:
+  SliceLoftOptions options_;
 };
 
 }  // namespace holebench

@@ -1,0 +1,449 @@
+#include "methods/slice_loft/composite_surface.h"
+
+#include "core/plane_fit.h"
+#include "methods/slice_loft/discrete_curvature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace holebench::slice_loft {
+namespace {
+
+// ---- portions -------------------------------------------------------------------------
+
+BoundaryNode vertex_node(const Mesh& mesh, VertexHandle v) {
+  return {v, -1, mesh.point(v)};
+}
+BoundaryNode feature_node(const MissingFeatures& features, int index) {
+  return {VertexHandle(), index, features.points[index]};
+}
+
+int island_region(const Mesh& mesh, const Contour& island, const std::vector<int>& face_region) {
+  std::map<int, int> votes;
+  for (auto h : island.loop.halfedges)
+    ++votes[face_region[mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx()]];
+  int best = kNoRegion, count = -1;
+  for (auto [region, n] : votes) {
+    if (n > count) {
+      best = region;
+      count = n;
+    }
+  }
+  return best;
+}
+
+// ---- slicing --------------------------------------------------------------------------
+
+// A connected piece of a slice: points in order, and whether each end lies on a boundary
+// edge of the mesh (a slice point on the hole or island boundary).
+struct SlicePiece {
+  std::vector<Point> points;
+  bool front_on_boundary = false, back_on_boundary = false;
+};
+
+// The slice of `faces` by the plane dot(p - origin, d) = u.
+std::vector<SlicePiece> slice(const Mesh& mesh, const std::vector<FaceHandle>& faces,
+                              const Point& origin, const Point& d, double u) {
+  std::unordered_map<int, Point> edge_point;
+  std::unordered_map<int, std::vector<int>> edge_segments;
+  std::vector<std::array<int, 2>> segments;
+  auto side = [&](VertexHandle v) { return OpenMesh::dot(mesh.point(v) - origin, d) - u; };
+  for (auto f : faces) {
+    std::array<int, 2> crossing{-1, -1};
+    int count = 0;
+    for (auto h : mesh.fh_range(f)) {
+      const double sa = side(h.from()), sb = side(h.to());
+      if ((sa >= 0.0) == (sb >= 0.0))
+        continue;
+      const int e = h.edge().idx();
+      if (!edge_point.count(e)) {
+        const Point& a = mesh.point(h.from());
+        edge_point[e] = a + (mesh.point(h.to()) - a) * (sa / (sa - sb));
+      }
+      if (count < 2)
+        crossing[count] = e;
+      ++count;
+    }
+    if (count != 2)
+      continue;
+    const int s = static_cast<int>(segments.size());
+    segments.push_back(crossing);
+    edge_segments[crossing[0]].push_back(s);
+    edge_segments[crossing[1]].push_back(s);
+  }
+  std::vector<char> used(segments.size(), 0);
+  std::vector<SlicePiece> pieces;
+  // Walk chains from their ends (edges used by one segment); closed loops are skipped.
+  std::vector<int> ends;
+  for (const auto& [e, list] : edge_segments) {
+    if (list.size() == 1)
+      ends.push_back(e);
+  }
+  std::sort(ends.begin(), ends.end());  // deterministic
+  for (int start : ends) {
+    const int first = edge_segments[start][0];
+    if (used[first])
+      continue;
+    SlicePiece piece;
+    piece.front_on_boundary = mesh.is_boundary(mesh.edge_handle(start));
+    piece.points.push_back(edge_point[start]);
+    int edge = start, segment = first;
+    while (segment >= 0 && !used[segment]) {
+      used[segment] = 1;
+      edge = segments[segment][0] == edge ? segments[segment][1] : segments[segment][0];
+      piece.points.push_back(edge_point[edge]);
+      int next = -1;
+      for (int s : edge_segments[edge]) {
+        if (!used[s])
+          next = s;
+      }
+      segment = next;
+    }
+    piece.back_on_boundary = mesh.is_boundary(mesh.edge_handle(edge));
+    if (piece.points.size() >= 2)
+      pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+// Where the polylines cross the plane dot(p - origin, d) = u.
+std::vector<Point> crossings(const std::vector<std::vector<Point>>& polylines, const Point& origin,
+                             const Point& d, double u) {
+  std::vector<Point> points;
+  for (const auto& polyline : polylines) {
+    for (std::size_t i = 0; i + 1 < polyline.size(); ++i) {
+      const double sa = OpenMesh::dot(polyline[i] - origin, d) - u;
+      const double sb = OpenMesh::dot(polyline[i + 1] - origin, d) - u;
+      if ((sa >= 0.0) != (sb >= 0.0))
+        points.push_back(polyline[i] + (polyline[i + 1] - polyline[i]) * (sa / (sa - sb)));
+    }
+  }
+  return points;
+}
+
+// Natural cubic spline through (x_i, y_i), x increasing, evaluated at x; linear beyond the
+// ends with the end slopes.
+double natural_spline(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  const std::size_t n = x.size();
+  if (n == 1)
+    return y[0];
+  std::vector<double> m(n, 0.0);  // second derivatives
+  if (n > 2) {
+    std::vector<double> c(n, 0.0), r(n, 0.0);
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
+      const double a = h0 / 6.0, b = (h0 + h1) / 3.0, cc = h1 / 6.0;
+      const double rhs = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
+      const double denom = b - a * c[i - 1];
+      c[i] = cc / denom;
+      r[i] = (rhs - a * r[i - 1]) / denom;
+    }
+    for (std::size_t i = n - 2; i >= 1; --i) {
+      m[i] = r[i] - c[i] * m[i + 1];
+      if (i == 1)
+        break;
+    }
+  }
+  auto slope = [&](std::size_t i, bool at_left) {
+    const double h = x[i + 1] - x[i];
+    const double base = (y[i + 1] - y[i]) / h;
+    return at_left ? base - h * (2.0 * m[i] + m[i + 1]) / 6.0
+                   : base + h * (m[i] + 2.0 * m[i + 1]) / 6.0;
+  };
+  if (at <= x[0])
+    return y[0] + slope(0, true) * (at - x[0]);
+  if (at >= x[n - 1])
+    return y[n - 1] + slope(n - 2, false) * (at - x[n - 1]);
+  const std::size_t i =
+      std::min<std::size_t>(n - 2, std::upper_bound(x.begin(), x.end(), at) - x.begin() - 1);
+  const double h = x[i + 1] - x[i], a = (x[i + 1] - at) / h, b = (at - x[i]) / h;
+  return a * y[i] + b * y[i + 1] +
+         ((a * a * a - a) * m[i] + (b * b * b - b) * m[i + 1]) * h * h / 6.0;
+}
+
+struct Frame {
+  Point origin, d, e, n;
+};
+
+// The portion's frame: n the mean normal of its triangles, d along the longer edge of the
+// box of its boundary in the plane normal to n.
+Frame portion_frame(const Mesh& mesh, const std::vector<FaceHandle>& faces,
+                    const std::vector<Point>& boundary) {
+  Frame frame;
+  Point n(0, 0, 0);
+  for (auto f : faces)
+    n += face_normal(mesh, f) * face_area(mesh, f);
+  const PlaneFit fit = fit_plane(boundary);
+  if (n.norm() < 1e-12)
+    n = fit.valid ? fit.plane.normal : Point(0, 0, 1);
+  frame.n = n.normalized();
+  Point centroid(0, 0, 0);
+  for (const Point& p : boundary)
+    centroid += p;
+  frame.origin = centroid / static_cast<double>(boundary.size());
+  const Point helper = std::abs(frame.n[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0);
+  const Point a = OpenMesh::cross(frame.n, helper).normalized();
+  const Point b = OpenMesh::cross(frame.n, a);
+  double xx = 0, xy = 0, yy = 0;
+  for (const Point& p : boundary) {
+    const double x = OpenMesh::dot(p - frame.origin, a), y = OpenMesh::dot(p - frame.origin, b);
+    xx += x * x;
+    xy += x * y;
+    yy += y * y;
+  }
+  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);  // major axis
+  frame.d = (a * std::cos(angle) + b * std::sin(angle)).normalized();
+  frame.e = OpenMesh::cross(frame.n, frame.d);
+  return frame;
+}
+
+}  // namespace
+
+std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>& contours,
+                                   const Hole& hole, const MissingFeatures& features,
+                                   const std::vector<int>& face_region) {
+  std::vector<Portion> portions;
+  const std::size_t m = hole.segments.size();
+  const bool with_features = m >= 2 && features.edges.size() == m;
+  if (!with_features) {
+    Portion portion;
+    portion.region = m == 1 ? hole.segments[0].region : kNoRegion;
+    for (auto v : contours[hole.contour].vertices)
+      portion.boundary.push_back(vertex_node(mesh, v));
+    portions.push_back(std::move(portion));
+  } else {
+    for (std::size_t i = 0; i < m; ++i) {
+      const Segment& segment = hole.segments[i];
+      const std::size_t next = (i + 1) % m;
+      Portion portion;
+      portion.region = segment.region;
+      for (auto v : segment.vertices)
+        portion.boundary.push_back(vertex_node(mesh, v));
+      // Back from the segment's end to its start through the missing features.
+      std::vector<Point> path_next{mesh.point(segment.end)}, path_this{mesh.point(segment.start)};
+      for (int index : features.edges[next].points) {
+        portion.boundary.push_back(feature_node(features, index));
+        path_next.push_back(features.points[index]);
+      }
+      if (features.corner >= 0) {
+        const auto& own = features.edges[i].points;
+        for (auto it = own.rbegin(); it != own.rend(); ++it) {
+          if (*it != features.corner)
+            portion.boundary.push_back(feature_node(features, *it));
+        }
+        for (int index : own)
+          path_this.push_back(features.points[index]);
+        portion.missing_edges = {path_next, path_this};
+      } else {
+        path_next.push_back(mesh.point(segment.start));
+        portion.missing_edges = {path_next};
+      }
+      portions.push_back(std::move(portion));
+    }
+  }
+  for (int index : hole.islands) {
+    std::vector<BoundaryNode> island;
+    for (auto v : contours[index].vertices)
+      island.push_back(vertex_node(mesh, v));
+    const int region = island_region(mesh, contours[index], face_region);
+    std::size_t owner = 0;
+    for (std::size_t p = 0; p < portions.size(); ++p) {
+      if (portions[p].region == region)
+        owner = p;
+    }
+    portions[owner].islands.push_back(std::move(island));
+  }
+  return portions;
+}
+
+double Section::height(double w) const {
+  const std::size_t n = samples.size();
+  if (n == 1)
+    return samples[0].second;
+  auto lerp = [&](std::size_t i, double at) {
+    const auto [w0, h0] = samples[i];
+    const auto [w1, h1] = samples[i + 1];
+    return h0 + (h1 - h0) * (at - w0) / (w1 - w0);
+  };
+  if (w <= samples[0].first)
+    return lerp(0, w);
+  if (w >= samples[n - 1].first)
+    return lerp(n - 2, w);
+  const auto it = std::upper_bound(samples.begin(), samples.end(), std::make_pair(w, -1e300));
+  return lerp(static_cast<std::size_t>(it - samples.begin()) - 1, w);
+}
+
+Point LoftedPatch::evaluate(double u, double w) const {
+  std::vector<double> us, hs;
+  for (const auto& s : sections) {
+    us.push_back(s.u);
+    hs.push_back(s.height(w));
+  }
+  return origin + d * u + e * w + n * natural_spline(us, hs, u);
+}
+
+LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& portion,
+                         const std::vector<int>& face_region,
+                         const CompositeSurfaceOptions& options) {
+  LoftedPatch patch;
+  std::vector<FaceHandle> faces;
+  for (auto f : hole.influencing) {
+    if (portion.region == kNoRegion || face_region[f.idx()] == portion.region)
+      faces.push_back(f);
+  }
+  if (faces.empty()) {
+    patch.error = "no influencing triangle in the portion's region";
+    return patch;
+  }
+  std::vector<Point> boundary;
+  for (const auto& node : portion.boundary)
+    boundary.push_back(node.position);
+  const Frame frame = portion_frame(mesh, faces, boundary);
+  patch.origin = frame.origin;
+  patch.d = frame.d;
+  patch.e = frame.e;
+  patch.n = frame.n;
+
+  double u_min = 1e300, u_max = -1e300, w_min = 1e300, w_max = -1e300;
+  auto extend = [&](const Point& p) {
+    u_min = std::min(u_min, patch.u_of(p));
+    u_max = std::max(u_max, patch.u_of(p));
+    w_min = std::min(w_min, patch.w_of(p));
+    w_max = std::max(w_max, patch.w_of(p));
+  };
+  for (const Point& p : boundary)
+    extend(p);
+  for (const auto& island : portion.islands) {
+    for (const auto& node : island)
+      extend(node.position);
+  }
+  const double edge = hole.mean_edge_length;
+  const double extent = u_max - u_min;
+  if (!(extent > 0.0)) {
+    patch.error = "a portion without extent";
+    return patch;
+  }
+  const double spacing = std::min(extent / options.slices, options.max_slice_spacing_edges * edge);
+  const int count = std::max(1, static_cast<int>(std::ceil(extent / spacing)));
+  const double h = extent / count;
+  const double margin = 2.0 * edge;
+  const double baseline = options.baseline_edges * edge;
+  TraceOptions trace;
+  trace.step = options.step_edges * edge;
+  trace.max_turn_rad = options.max_turn_degrees * M_PI / 180.0;
+  trace.max_steps = static_cast<int>(std::ceil((w_max - w_min + 2.0 * margin) / trace.step)) + 8;
+
+  for (int j = -options.extra_slices; j < count + options.extra_slices; ++j) {
+    Section section;
+    section.u = u_min + (j + 0.5) * h;
+    // Slice pieces as 3D polylines ordered by increasing w; overlapping pieces (a second
+    // sheet of the region) are dropped, longest first kept.
+    std::vector<SlicePiece> pieces = slice(mesh, faces, patch.origin, patch.d, section.u);
+    for (auto& piece : pieces) {
+      if (patch.w_of(piece.points.front()) > patch.w_of(piece.points.back())) {
+        std::reverse(piece.points.begin(), piece.points.end());
+        std::swap(piece.front_on_boundary, piece.back_on_boundary);
+      }
+    }
+    std::sort(pieces.begin(), pieces.end(), [](const SlicePiece& a, const SlicePiece& b) {
+      return polyline_length(a.points) > polyline_length(b.points);
+    });
+    std::vector<SlicePiece> kept;
+    for (auto& piece : pieces) {
+      const double lo = patch.w_of(piece.points.front()), hi = patch.w_of(piece.points.back());
+      bool overlaps = false;
+      for (const auto& k : kept) {
+        overlaps =
+            overlaps || (lo < patch.w_of(k.points.back()) && hi > patch.w_of(k.points.front()));
+      }
+      if (!overlaps)
+        kept.push_back(std::move(piece));
+    }
+    if (kept.empty())
+      continue;
+    std::sort(kept.begin(), kept.end(), [&](const SlicePiece& a, const SlicePiece& b) {
+      return patch.w_of(a.points.front()) < patch.w_of(b.points.front());
+    });
+    const std::vector<Point> targets =
+        crossings(portion.missing_edges, patch.origin, patch.d, section.u);
+
+    std::vector<Point> points;  // everything on the section, in 3D
+    auto add_traced = [&](const std::vector<Point>& traced) {
+      points.insert(points.end(), traced.begin(), traced.end());
+      section.traced.insert(section.traced.end(), traced.begin(), traced.end());
+    };
+    // Traces from the end of a piece away from it: `outward` runs from that end inwards.
+    auto trace_from = [&](std::vector<Point> outward, double w_stop, bool increasing) {
+      const BackPoints back = back_points(outward, baseline);
+      if (!back.valid)
+        return std::vector<Point>{outward.front()};
+      return trace_curvature_continuous(back.q2, back.q1, back.q0, trace, [&](const Point& p) {
+        return increasing ? patch.w_of(p) > w_stop : patch.w_of(p) < w_stop;
+      });
+    };
+    // One-sided extension at an end of the section, bent through a missing-edge crossing.
+    auto extend_end = [&](const SlicePiece& piece, bool right) {
+      std::vector<Point> outward = piece.points;
+      if (right)
+        std::reverse(outward.begin(), outward.end());
+      const double w_end = patch.w_of(outward.front());
+      const Point* target = nullptr;
+      for (const Point& t : targets) {
+        const double wt = patch.w_of(t);
+        if ((right ? wt > w_end : wt < w_end) &&
+            (!target || std::abs(wt - w_end) < std::abs(patch.w_of(*target) - w_end)))
+          target = &t;
+      }
+      const double limit = right ? w_max + margin : w_min - margin;
+      if (target) {
+        const double wt = patch.w_of(*target);
+        const auto traced = trace_from(outward, right ? wt + margin : wt - margin, right);
+        auto bent = bend_to(traced, *target, trace.step);
+        add_traced(bent);
+        points.push_back(*target);
+      } else if (right ? w_end < limit : w_end > limit) {
+        auto traced = trace_from(outward, limit, right);
+        traced.erase(traced.begin());
+        add_traced(traced);
+      }
+    };
+
+    extend_end(kept.front(), false);
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      points.insert(points.end(), kept[k].points.begin(), kept[k].points.end());
+      if (k + 1 == kept.size())
+        break;
+      // A gap (the hole, between hole and island, ...): traced from both of its ends.
+      std::vector<Point> left(kept[k].points.rbegin(), kept[k].points.rend());
+      const std::vector<Point>& right = kept[k + 1].points;
+      const double wl = patch.w_of(left.front()), wr = patch.w_of(right.front());
+      const auto from_left = trace_from(left, wr + margin, true);
+      const auto from_right = trace_from(right, wl - margin, false);
+      add_traced(bridge(from_left, from_right, trace.step));
+    }
+    extend_end(kept.back(), true);
+
+    for (const Point& p : points)
+      section.samples.push_back({patch.w_of(p), OpenMesh::dot(p - patch.origin, patch.n)});
+    std::stable_sort(section.samples.begin(), section.samples.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::pair<double, double>> unique;
+    for (const auto& s : section.samples) {
+      if (unique.empty() || s.first > unique.back().first + 1e-9 * edge)
+        unique.push_back(s);
+    }
+    section.samples = std::move(unique);
+    if (section.samples.size() >= 2)
+      patch.sections.push_back(std::move(section));
+  }
+  if (patch.sections.size() < 2) {
+    patch.error = "fewer than two section curves";
+    return patch;
+  }
+  patch.ok = true;
+  return patch;
+}
+
+}  // namespace holebench::slice_loft

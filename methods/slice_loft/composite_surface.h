@@ -1,0 +1,73 @@
+// Step IV of the slice paper (section 4.4): the hole split into portions (one per segment,
+// bounded by the segment and the missing edges); per portion, the influencing triangles of
+// its region (and the islands') sliced by planes advanced along the longer edge of the
+// portion's box; section curves traced with curvature continuity from the slice points on
+// the boundary (hole to island to hole); the sections lofted into a smooth patch. Adjacent
+// patches share the missing edges' points, which stitches them into the composite surface.
+#pragma once
+
+#include "methods/slice_loft/hole_structures.h"
+
+#include <string>
+#include <vector>
+
+namespace holebench::slice_loft {
+
+/// A vertex of a portion's boundary: an original vertex, or a point of a missing feature.
+struct BoundaryNode {
+  VertexHandle vertex;  ///< valid for a vertex of the hole or island boundary
+  int feature = -1;     ///< else an index into MissingFeatures::points
+  Point position;
+};
+
+/// The part of a hole that lies in one region.
+struct Portion {
+  int region = kNoRegion;              ///< kNoRegion: every influencing triangle is sliced
+  std::vector<BoundaryNode> boundary;  ///< in the hole boundary's direction
+  std::vector<std::vector<BoundaryNode>> islands;
+  std::vector<std::vector<Point>> missing_edges;  ///< the feature paths it is bounded by
+};
+
+/// The portions of a hole: one per segment when features were found, else the whole hole.
+std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>& contours,
+                                   const Hole& hole, const MissingFeatures& features,
+                                   const std::vector<int>& face_region);
+
+struct CompositeSurfaceOptions {
+  /// Slices across the longer edge of the portion's box (the paper's offset as a count) ...
+  int slices = 10;
+  /// ... but at most this many mean boundary-edge lengths apart.
+  double max_slice_spacing_edges = 1.0;
+  int extra_slices = 2;         ///< slices beyond each end of the portion
+  double baseline_edges = 2.0;  ///< spacing of the points a trace takes curvature from
+  double step_edges = 0.25;     ///< tracing step along a section
+  double max_turn_degrees = 20.0;
+};
+
+/// One section curve: the slice of the mesh plus the traced curves across the gaps, as a
+/// height function h(w) over the slice's line in the portion's frame.
+struct Section {
+  double u = 0.0;
+  std::vector<std::pair<double, double>> samples;  ///< (w, h), w increasing
+  std::vector<Point> traced;  ///< the discrete points generated in the gaps (3D)
+  double height(double w) const;
+};
+
+/// A lofted patch over the portion's frame: S(u, w) = origin + u d + w e + H(u, w) n, with H
+/// a natural cubic spline across the sections at fixed w.
+struct LoftedPatch {
+  Point origin, d, e, n;
+  std::vector<Section> sections;
+  bool ok = false;
+  std::string error;
+
+  double u_of(const Point& p) const { return OpenMesh::dot(p - origin, d); }
+  double w_of(const Point& p) const { return OpenMesh::dot(p - origin, e); }
+  Point evaluate(double u, double w) const;
+};
+
+LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& portion,
+                         const std::vector<int>& face_region,
+                         const CompositeSurfaceOptions& options = {});
+
+}  // namespace holebench::slice_loft

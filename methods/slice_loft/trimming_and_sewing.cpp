@@ -1,0 +1,279 @@
+// The slice_loft translation unit that includes CGAL (2D constrained Delaunay).
+#include "methods/slice_loft/trimming_and_sewing.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cmath>
+#include <list>
+#include <unordered_map>
+
+namespace holebench::slice_loft {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+struct FaceInfo {
+  int nesting = -1;
+};
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using FaceBase = CGAL::Constrained_triangulation_face_base_2<
+    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::No_constraint_intersection_tag>;
+
+struct Vec2 {
+  double x = 0.0, y = 0.0;
+};
+
+// Faces by nesting level across constraints (CGAL's polygon_triangulation example).
+void mark_nesting(Cdt& cdt) {
+  std::list<Cdt::Edge> border;
+  auto flood = [&](Cdt::Face_handle start, int level) {
+    if (start->info().nesting != -1)
+      return;
+    std::list<Cdt::Face_handle> queue{start};
+    while (!queue.empty()) {
+      auto f = queue.front();
+      queue.pop_front();
+      if (f->info().nesting != -1)
+        continue;
+      f->info().nesting = level;
+      for (int i = 0; i < 3; ++i) {
+        const Cdt::Edge e(f, i);
+        auto n = f->neighbor(i);
+        if (n->info().nesting != -1)
+          continue;
+        if (cdt.is_constrained(e))
+          border.push_back(e);
+        else
+          queue.push_back(n);
+      }
+    }
+  };
+  flood(cdt.infinite_face(), 0);
+  while (!border.empty()) {
+    const Cdt::Edge e = border.front();
+    border.pop_front();
+    auto n = e.first->neighbor(e.second);
+    if (n->info().nesting == -1)
+      flood(n, e.first->info().nesting + 1);
+  }
+}
+
+bool inside(const std::vector<Vec2>& polygon, Vec2 p) {
+  bool in = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 a = polygon[i], b = polygon[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+      in = !in;
+  }
+  return in;
+}
+
+double distance_to_loop(const std::vector<Vec2>& loop, Vec2 p) {
+  double best = 1e300;
+  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+    const double dx = loop[i].x - loop[j].x, dy = loop[i].y - loop[j].y;
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((p.x - loop[j].x) * dx + (p.y - loop[j].y) * dy) / len2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    best = std::min(best, std::hypot(loop[j].x + t * dx - p.x, loop[j].y + t * dy - p.y));
+  }
+  return best;
+}
+
+double signed_area(const std::vector<Vec2>& loop) {
+  double area = 0.0;
+  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+    area += loop[j].x * loop[i].y - loop[i].x * loop[j].y;
+  return 0.5 * area;
+}
+
+}  // namespace
+
+PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedPatch& patch,
+                                           double edge_length, const TessellationOptions& options) {
+  PatchTessellation result;
+  auto parameters = [&](const Point& p) { return Vec2{patch.u_of(p), patch.w_of(p)}; };
+  std::vector<std::vector<Vec2>> loops(1);
+  for (const auto& node : portion.boundary)
+    loops[0].push_back(parameters(node.position));
+  for (const auto& island : portion.islands) {
+    loops.emplace_back();
+    for (const auto& node : island)
+      loops.back().push_back(parameters(node.position));
+  }
+  const double spacing = options.spacing_edges * edge_length;
+  const double clearance = options.clearance * spacing;
+  auto admissible = [&](Vec2 p) {
+    if (!inside(loops[0], p))
+      return false;
+    for (std::size_t k = 1; k < loops.size(); ++k) {
+      if (inside(loops[k], p))
+        return false;
+    }
+    for (const auto& loop : loops) {
+      if (distance_to_loop(loop, p) < clearance)
+        return false;
+    }
+    return true;
+  };
+
+  // Trimming: the candidate points inside the hole's and outside the islands' boundaries.
+  std::vector<Vec2> interior_2d;
+  if (options.direct) {
+    for (const auto& section : patch.sections) {
+      for (const Point& p : section.traced) {
+        const Vec2 q = parameters(p);
+        if (!admissible(q))
+          continue;
+        bool crowded = false;
+        for (const Vec2& r : interior_2d)
+          crowded = crowded || std::hypot(q.x - r.x, q.y - r.y) < 0.5 * spacing;
+        if (crowded)
+          continue;
+        interior_2d.push_back(q);
+        result.interior.push_back(p);
+      }
+    }
+  } else {
+    double u0 = 1e300, u1 = -1e300, w0 = 1e300, w1 = -1e300;
+    for (const Vec2& p : loops[0]) {
+      u0 = std::min(u0, p.x);
+      u1 = std::max(u1, p.x);
+      w0 = std::min(w0, p.y);
+      w1 = std::max(w1, p.y);
+    }
+    const double row = spacing * std::sqrt(3.0) / 2.0;
+    int r = 0;
+    for (double w = w0 + 0.5 * row; w < w1; w += row, ++r) {
+      for (double u = u0 + (r % 2 ? 0.5 : 0.25) * spacing; u < u1; u += spacing) {
+        if (!admissible({u, w}))
+          continue;
+        interior_2d.push_back({u, w});
+        result.interior.push_back(patch.evaluate(u, w));
+      }
+    }
+  }
+
+  // Faceting: constrained Delaunay triangulation with the boundary edges as constraints.
+  try {
+    Cdt cdt;
+    int index = 0;
+    for (const auto& loop : loops) {
+      if (loop.size() < 3) {
+        result.error = "a boundary with fewer than three points";
+        return result;
+      }
+      std::vector<Cdt::Vertex_handle> handles;
+      for (const Vec2& p : loop) {
+        // Vertex infos are not initialised by CGAL: a vertex is new iff the count grew.
+        const std::size_t before = cdt.number_of_vertices();
+        auto h = cdt.insert(Kernel::Point_2(p.x, p.y));
+        if (cdt.number_of_vertices() == before) {
+          result.error = "two boundary points share a parameter point";
+          return result;
+        }
+        h->info() = ++index;
+        handles.push_back(h);
+      }
+      for (std::size_t i = 0; i < handles.size(); ++i)
+        cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
+    }
+    std::vector<Point> kept;  // interior points the triangulation did not merge
+    for (std::size_t i = 0; i < interior_2d.size(); ++i) {
+      const std::size_t before = cdt.number_of_vertices();
+      auto h = cdt.insert(Kernel::Point_2(interior_2d[i].x, interior_2d[i].y));
+      if (cdt.number_of_vertices() == before)
+        continue;
+      h->info() = ++index;
+      kept.push_back(result.interior[i]);
+    }
+    result.interior = std::move(kept);
+    mark_nesting(cdt);
+    const bool flip = signed_area(loops[0]) < 0.0;
+    for (auto f : cdt.finite_face_handles()) {
+      if (f->info().nesting % 2 != 1)
+        continue;
+      std::array<int, 3> tri{};
+      for (int i = 0; i < 3; ++i) {
+        tri[i] = f->vertex(i)->info() - 1;
+      }
+      if (flip)
+        std::swap(tri[1], tri[2]);
+      result.triangles.push_back(tri);
+    }
+  } catch (const std::exception& e) {
+    result.error =
+        std::string("the boundary intersects itself in the parameter domain (") + e.what() + ")";
+    return result;
+  }
+  if (result.triangles.empty()) {
+    result.error = "no facet inside the trimmed patch";
+    return result;
+  }
+  result.ok = true;
+  return result;
+}
+
+SewingResult sew_patches(Mesh& mesh, const std::vector<Portion>& portions,
+                         const std::vector<PatchTessellation>& tessellations,
+                         const MissingFeatures& features) {
+  SewingResult result;
+  const Mesh backup = mesh;
+  std::unordered_map<int, VertexHandle> feature_vertex;
+  for (std::size_t p = 0; p < portions.size(); ++p) {
+    const Portion& portion = portions[p];
+    const PatchTessellation& facets = tessellations[p];
+    std::vector<VertexHandle> handles;
+    auto add_node = [&](const BoundaryNode& node) {
+      if (node.vertex.is_valid()) {
+        handles.push_back(node.vertex);
+        return;
+      }
+      auto [it, inserted] = feature_vertex.try_emplace(node.feature);
+      if (inserted) {
+        it->second = mesh.add_vertex(features.points[node.feature]);
+        ++result.new_vertices;
+      }
+      handles.push_back(it->second);
+    };
+    for (const auto& node : portion.boundary)
+      add_node(node);
+    for (const auto& island : portion.islands) {
+      for (const auto& node : island)
+        add_node(node);
+    }
+    const std::size_t first_interior = handles.size();
+    for (const Point& q : facets.interior)
+      handles.push_back(mesh.add_vertex(q));
+    std::vector<char> used(handles.size(), 0);
+    for (const auto& t : facets.triangles) {
+      const FaceHandle f = mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+      if (!f.is_valid()) {
+        mesh = backup;
+        result = SewingResult{};
+        result.error = "a facet would make the mesh non-manifold";
+        return result;
+      }
+      used[t[0]] = used[t[1]] = used[t[2]] = 1;
+      ++result.new_faces;
+    }
+    for (std::size_t i = first_interior; i < handles.size(); ++i) {
+      if (!used[i]) {  // cannot happen: interior points lie inside the trimmed domain
+        mesh = backup;
+        result = SewingResult{};
+        result.error = "an interior point outside every facet";
+        return result;
+      }
+      ++result.new_vertices;
+    }
+  }
+  result.ok = true;
+  return result;
+}
+
+}  // namespace holebench::slice_loft
