@@ -101,7 +101,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
           ch = '_';
       }
       const auto path = options.snapshot_dir / (name + ".png");
-      render::write_png(render::render_snapshot(result.repaired, render::hole_camera(c)), path);
+      render::write_png(render::job_snapshot(c, result), path);
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
     }
   } catch (const InvalidInputError& e) {

@@ -4,6 +4,7 @@
 #include "harness/case_gallery.h"
 #include "harness/case_selection.h"
 #include "harness/compare.h"
+#include "harness/paper_figures.h"
 #include "harness/report/report.h"
 #include "harness/results_reader.h"
 #include "harness/run_command.h"
@@ -193,6 +194,18 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   compare->add_option("--junit", junit_path, "Also write a JUnit XML file for CI dashboards");
 
+  holebench::harness::FiguresOptions figures_options;
+  std::filesystem::path figures_results;
+  auto* figures = app.add_subcommand(
+      "figures",
+      "Regenerate the papers' figures and tables: B-Rep figure 5 (rendered), and with "
+      "--results the slice paper's Table 2 and the crest-line paper's figures 10/13 setting");
+  figures->add_option("--out", figures_options.out_dir, "Output folder")->required();
+  figures
+      ->add_option("--results", figures_results,
+                   "results.json of the paper suite (holebench run --suite paper)")
+      ->check(CLI::ExistingFile);
+
   std::filesystem::path report_dir;
   auto* report = app.add_subcommand(
       "report", "Write DIR/report/: summary tables (Markdown, CSV, LaTeX), plots and an HTML page");
@@ -289,6 +302,14 @@ int main(int argc, char** argv) {
       if (!junit_path.empty())
         holebench::harness::write_junit_xml(comparison, junit_path);
       return comparison.has_regression() ? 1 : 0;
+    }
+    if (figures->parsed()) {
+      if (!figures_results.empty())
+        figures_options.results = figures_results;
+      for (const auto& path : holebench::harness::write_paper_figures(figures_options)) {
+        fmt::print("{}\n", path.string());
+      }
+      return 0;
     }
     if (report->parsed()) {
       const auto data = holebench::harness::read_results_json(report_dir / "results.json");

@@ -163,6 +163,7 @@ void add_validity(const Case& c, const MethodResult& result, const EvaluationOpt
     out.add_count("patch_self_intersections_count", v.patch_self_intersections);
   }
   out.add_count("new_faces_count", count_new_faces(result.repaired));
+  out.add_count("input_faces_count", c.input.n_faces());
   out.add_count("new_degenerate_faces_count", v.new_degenerate_faces);
   out.add_count("original_faces_changed_count", v.original_faces_changed);
   out.add_flag("original_faces_unchanged_ok", v.original_faces_changed == 0);

@@ -4,6 +4,7 @@
 #include "core/geometry.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace holebench::render {
@@ -71,14 +72,54 @@ Overlay hole_overlay(const Mesh& holed, double normal_length) {
   }
   // One normal per region next to a hole, at the mean of its faces along the hole.
   std::map<int, Point> normal_sum;
-  for (auto f : holed.faces()) normal_sum[region(holed, f)] += face_normal(holed, f) * face_area(holed, f);
+  for (auto f : holed.faces())
+    normal_sum[region(holed, f)] += face_normal(holed, f) * face_area(holed, f);
   for (const auto& [id, entry] : near_hole) {
-    if (id == kNoRegion || normal_sum[id].norm() == 0.0) continue;
+    if (id == kNoRegion || normal_sum[id].norm() == 0.0)
+      continue;
     const Point base = entry.first / entry.second;
     const Point n = normal_sum[id] / normal_sum[id].norm();
     overlay.lines.push_back({base, base + n * normal_length, black, 2.0f});
   }
   return overlay;
+}
+
+void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length, const Camera& camera) {
+  const Rgb blue{0.05f, 0.15f, 0.75f};
+  const Point r = arrow.direction / arrow.direction.norm();
+  const Point tip = arrow.position + r * length;
+  Point side = OpenMesh::cross(r, camera.direction);
+  if (side.norm() < 1e-9)
+    side = OpenMesh::cross(r, std::abs(r[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0));
+  side /= side.norm();
+  const double head = 0.2 * length;
+  overlay.lines.push_back({arrow.position, tip, blue, 4.0f});
+  overlay.lines.push_back({tip, tip - r * head + side * (0.5 * head), blue, 4.0f});
+  overlay.lines.push_back({tip, tip - r * head - side * (0.5 * head), blue, 4.0f});
+  overlay.dots.push_back({arrow.position, blue, 4.0f});
+}
+
+Image job_snapshot(const Case& c, const MethodResult& result, const SnapshotOptions& options) {
+  Camera camera = hole_camera(c);
+  // Widen the view where an arrow starts outside it.
+  const double half_angle = 0.5 * camera.field_of_view_degrees * M_PI / 180.0;
+  double radius = camera.distance * std::sin(half_angle) / 1.05;
+  for (const auto& hole : result.holes) {
+    if (hole.arrow)
+      radius = std::max(radius, 1.1 * (hole.arrow->position - camera.target).norm());
+  }
+  camera.distance = 1.05 * radius / std::sin(half_angle);
+  Overlay overlay;
+  const double diagonal = bounding_box(c.complete).diagonal();
+  for (const auto& hole : result.holes) {
+    if (!hole.arrow)
+      continue;
+    // Point the arrow's shaft from P most of the way to the hole.
+    const double length =
+        std::max(0.05 * diagonal, 0.8 * (hole.centroid - hole.arrow->position).norm());
+    add_arrow(overlay, *hole.arrow, length, camera);
+  }
+  return render_snapshot(result.repaired, camera, options, overlay);
 }
 
 }  // namespace holebench::render

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/case.h"
+#include "core/method_result.h"
 #include "harness/render/snapshot.h"
 
 namespace holebench::render {
@@ -16,5 +17,13 @@ Camera hole_camera(const Case& c);
 /// passes from one region to the next (dark dots), and one normal per region next to a
 /// hole (black strokes), as figure 5 of the B-Rep paper shows its cases.
 Overlay hole_overlay(const Mesh& holed, double normal_length);
+
+/// A guidance arrow (the B-Rep paper's (P, r)) drawn as a 3D arrow: a shaft from P along r
+/// of `length` and a head at its tip, in a plane facing the camera.
+void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length, const Camera& camera);
+
+/// The snapshot of a job: the repaired mesh from the case's hole view, with every guidance
+/// arrow of the method drawn in.
+Image job_snapshot(const Case& c, const MethodResult& result, const SnapshotOptions& options = {});
 
 }  // namespace holebench::render
