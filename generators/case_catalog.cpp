@@ -4,6 +4,7 @@
 #include "core/geometry.h"
 #include "generators/box_holes.h"
 #include "generators/brep/brep_cases.h"
+#include "generators/crease_holes.h"
 #include "generators/procedural_solids.h"
 #include "generators/punched_case.h"
 #include "generators/random.h"
@@ -124,6 +125,14 @@ struct CaseCatalog::State {
     }
     if (family == "brep")
       return make_brep_case(id);
+    if (family == "crease" && parts.size() == 3 && options.include_cad) {
+      for (const auto& creases : {"1", "2", "3"}) {
+        if (parts[2] != creases)
+          continue;
+        if (auto load = loader("cad", parts[1]))
+          return make_crease_hole_case(*load(), std::stoi(parts[2]), id);
+      }
+    }
     if (parts.size() == 4) {
       if (auto load = loader(family, parts[1])) {
         const auto model = load();  // throws InvalidInputError for an unusable model
@@ -164,6 +173,25 @@ struct CaseCatalog::State {
     if (options.include_cad && listed_family("cad")) {
       for (const auto& source : cgal_cad_models(options.cad_data_dir)) {
         add_punched("cad", source.name, loader("cad", source.name));
+      }
+    }
+    if (options.include_cad && listed_family("crease")) {
+      // The crest-line paper's figures 10 and 13: holes across 1, 2 and 3 creases.
+      for (const auto& source : cgal_cad_models(options.cad_data_dir)) {
+        if (source.name != "fandisk")
+          continue;
+        try {
+          prepare_cad_model(source, options.prepare);
+        } catch (const std::exception& e) {
+          skipped.push_back({"crease/" + source.name, e.what()});
+          continue;
+        }
+        for (int creases = 1; creases <= 3; ++creases) {
+          add({fmt::format("crease/{}/{}", source.name, creases), "crease",
+               fmt::format("creases_{}", creases),
+               fmt::format("{}, a hole across {} crease{} (crest-line paper, figures 10, 13)",
+                           source.name, creases, creases == 1 ? "" : "s")});
+        }
       }
     }
     if (listed_family("file")) {

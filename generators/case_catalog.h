@@ -7,6 +7,7 @@
 //   cad/<model>/<target>/<size>       holes punched into CGAL's CAD meshes
 //   solid/<name>/<target>/<size>      holes punched into procedural solids
 //   file/<stem>/<target>/<size>       holes punched into a user's mesh files
+//   crease/fandisk/<n>                holes across n = 1, 2, 3 creases of the fandisk
 // <size> is "small" (radius 2 % of the diagonal, below the structure size) or "large"
 // (8 %, above it).
 #pragma once
@@ -34,8 +35,8 @@ struct CatalogOptions {
   bool include_cad = true;  ///< the CGAL data set (analysed on first use: a few seconds)
   std::vector<std::filesystem::path> user_meshes;  ///< files or folders
   PrepareOptions prepare;
-  /// Families to list ("box", "brep", "solid", "cad", "file"); empty: all. Listing a family
-  /// analyses its models, so leaving out the ones a selection cannot match saves time.
+  /// Families to list ("box", "brep", "solid", "cad", "crease", "file"); empty: all. Listing a
+  /// family analyses its models, so leaving out the ones a selection cannot match saves time.
   /// make() works for any family regardless.
   std::vector<std::string> families;
 };

@@ -13,11 +13,21 @@ namespace holebench::harness {
 /// Answers from the ground truth: agrees to closing a hole only where the hole it is
 /// about (the ground-truth hole whose removed faces lie nearest the proposal's centroid)
 /// is expected to be closed automatically. Each refusal counts as an intervention.
+///
+/// Feature points (crest-line paper 3.4.2): the true feature points of the hole are the
+/// ends of its missing sharp edges on the hole boundary (ends at a missing corner are not),
+/// each snapped to the nearest proposed boundary point; the true pairs are the two ends of
+/// one missing edge; the true corner triple the ends of the three missing edges that meet
+/// at its missing corner. A proposed point within three mean boundary edge lengths of a true
+/// one (greedy, nearest first) is matched to it. One intervention each: a matched point
+/// moved to another boundary vertex, a proposed point removed, a true point added, a pair
+/// made or undone, the corner triple named, changed or cleared.
 class OracleUser final : public User {
  public:
   explicit OracleUser(const Case& c) : case_(c) {}
   std::string kind() const override { return "oracle"; }
   bool agree_to_closing(const ClosingProposal& proposal) override;
+  FeaturePointProposal review_feature_points(const FeaturePointProposal& proposal) override;
 
  private:
   const Case& case_;

@@ -5,7 +5,10 @@
 
 #include "core/mesh.h"
 
+#include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace holebench {
 
@@ -14,6 +17,21 @@ struct ClosingProposal {
   int hole_index = 0;   ///< index of the hole in the method's detection order
   Point hole_centroid;  ///< where the hole is, so that an oracle can find its ground truth
   double hole_size = 0.0;
+};
+
+/// The crest-line paper's user step (section 3.4.2) for one hole: the feature points the
+/// method detected on the hole boundary (where crest lines meet it), how it pairs them
+/// (one feature line per pair) and, for a corner hole, the triple of feature points whose
+/// feature lines meet at the missing corner. A user may move, add or remove feature points
+/// (positions are snapped to the nearest boundary vertex by the method), re-pair them and
+/// name or clear the corner triple.
+struct FeaturePointProposal {
+  int hole_index = 0;           ///< index of the hole in the method's detection order
+  Point hole_centroid;          ///< where the hole is, so that an oracle can find its ground truth
+  std::vector<Point> boundary;  ///< the hole's boundary vertices, in loop order
+  std::vector<Point> feature_points;         ///< on the boundary (each one of `boundary`)
+  std::vector<std::array<int, 2>> pairs;     ///< indices into feature_points
+  std::optional<std::array<int, 3>> corner;  ///< indices into feature_points
 };
 
 class User {
@@ -26,6 +44,12 @@ class User {
   /// The B-Rep paper's cases a and b: may the hole be closed automatically?
   virtual bool agree_to_closing(const ClosingProposal& proposal) = 0;
 
+  /// The crest-line paper's user step (3.4.2): returns the feature points, pairs and corner
+  /// triple to use for one hole. The default accepts the proposal unchanged.
+  virtual FeaturePointProposal review_feature_points(const FeaturePointProposal& proposal) {
+    return proposal;
+  }
+
   /// How many times this user changed what the method would have done alone.
   int interventions() const { return interventions_; }
 
@@ -36,7 +60,7 @@ class User {
   int interventions_ = 0;
 };
 
-/// No human: agrees to everything, never intervenes.
+/// No human: agrees to everything, accepts every proposal, never intervenes.
 class NoUser final : public User {
  public:
   std::string kind() const override { return "no_user"; }

@@ -1,12 +1,110 @@
 #include "methods/crest_feature/crest_feature.h"
 
-namespace holebench {
+#include "methods/crest_feature/hole_identification.h"
+#include "methods/crest_feature/hole_partitioning.h"
 
-MethodResult CrestFeatureMethod::run(const Mesh& holed, const MethodParameters&, User&) const {
+#include <fmt/format.h>
+
+#include <chrono>
+
+namespace holebench {
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+}  // namespace
+
+MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeatureOptions& options) {
+  using namespace crest_feature;
   MethodResult result;
   result.repaired = holed;
-  result.status = MethodStatus::Failed;
-  result.message = "crest_feature is not implemented yet";
+
+  auto start = Clock::now();
+  const CrestLines crest = detect_crest_lines(holed, options.crest_lines);
+  result.phases.push_back({"crest line detection (3.2)", seconds_since(start)});
+  if (crest.skipped)
+    result.message = "crest lines skipped (degenerate principal directions): plain filling";
+
+  start = Clock::now();
+  const std::vector<Hole> holes = identify_holes(holed);
+  result.phases.push_back({"hole identification (3.3)", seconds_since(start)});
+
+  double feature_seconds = 0.0, user_seconds = 0.0, interpolation_seconds = 0.0,
+         partition_seconds = 0.0, filling_seconds = 0.0;
+  std::size_t closed = 0;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const Hole& hole = holes[i];
+    const auto hole_start = Clock::now();
+    HoleReport report;
+    report.hole_index = static_cast<int>(i);
+    report.loop_size = hole.vertices.size();
+    report.centroid = hole.centroid;
+
+    start = Clock::now();
+    const HoleFeatures detected = detect_feature_points(holed, hole, crest, options.feature_points);
+    feature_seconds += seconds_since(start);
+
+    start = Clock::now();
+    const int before = user.interventions();
+    const HoleFeatures features = review_feature_points(holed, hole, static_cast<int>(i), crest,
+                                                        detected, user, options.feature_points);
+    user_seconds += seconds_since(start);
+
+    start = Clock::now();
+    const FeatureLines lines = interpolate_feature_lines(hole, features, options.interpolation);
+    interpolation_seconds += seconds_since(start);
+
+    start = Clock::now();
+    const HolePartition partition = partition_hole(hole, lines);
+    partition_seconds += seconds_since(start);
+
+    start = Clock::now();
+    const HoleFillingResult filling = fill_hole(result.repaired, partition, options.filling);
+    filling_seconds += seconds_since(start);
+
+    report.closed = filling.closed;
+    report.new_faces = filling.new_faces;
+    report.new_vertices = filling.new_vertices;
+    std::string fallback;
+    if (!filling.closed && options.filling.triangulate_hole_fallback) {
+      // Not in the paper: the hole is closed without its feature lines.
+      start = Clock::now();
+      report.new_faces = fill_hole_without_features(result.repaired, hole.loop.halfedges.front());
+      filling_seconds += seconds_since(start);
+      report.closed = report.new_faces > 0;
+      fallback = "; " + filling.error + ": filled by CGAL triangulate_hole without feature lines";
+    }
+    std::size_t fallbacks = 0;
+    for (const auto& s : filling.sub_holes)
+      fallbacks += s.ok && s.plane != "equation 6" ? 1 : 0;
+    report.note = fmt::format(
+        "feature points detected {} used {}; pairs {}; corner {}; user interventions {}; "
+        "feature lines {}; sub-holes {}; projection fallbacks {}",
+        detected.points.size(), features.points.size(), features.pairs.size(),
+        features.corner ? "yes" : "no", user.interventions() - before, lines.lines.size(),
+        partition.sub_holes.size(), fallbacks);
+    for (const auto& d : partition.dropped)
+      report.note += "; dropped: " + d;
+    report.note += fallback;
+    if (!report.closed)
+      report.note += "; not filled: " + filling.error;
+    closed += report.closed ? 1 : 0;
+    report.seconds = seconds_since(hole_start);
+    result.holes.push_back(std::move(report));
+  }
+  result.phases.push_back({"feature points (3.4.1)", feature_seconds});
+  result.phases.push_back({"user intervention (3.4.2)", user_seconds});
+  result.phases.push_back({"feature line interpolation (3.4.3)", interpolation_seconds});
+  result.phases.push_back({"hole partitioning (3.4.4)", partition_seconds});
+  result.phases.push_back({"hole filling (3.5)", filling_seconds});
+  result.status = closed == holes.size()          ? MethodStatus::Ok
+                  : closed == 0 && !holes.empty() ? MethodStatus::Failed
+                                                  : MethodStatus::Partial;
+  if (result.status != MethodStatus::Ok) {
+    result.message += (result.message.empty() ? "" : "; ") +
+                      fmt::format("{} of {} holes left open", holes.size() - closed, holes.size());
+  }
   return result;
 }
 

@@ -1,18 +1,46 @@
 // Method crest_feature: section 3 of "User-guided feature-sensitive hole filling"
-// (../shared/papers/user-guided-feature-sensitive-hole-filling.txt). Being written.
+// (../shared/papers/user-guided-feature-sensitive-hole-filling.txt). Crest lines (3.2) are
+// detected on the whole mesh, holes identified (3.3); per hole, feature points where crest
+// lines meet its boundary are detected, paired and the corner triple named (3.4.1-3.4.2:
+// an automatic rule, then the User), feature lines interpolated across the hole by
+// Catmull-Rom splines (3.4.3), the hole split along them into sub-holes (3.4.4), and each
+// sub-hole filled by a constrained Delaunay triangulation of its boundary projected on the
+// plane of equation 6 (3.5). See docs/crest_feature.md.
 #pragma once
 
+#include "methods/crest_feature/crest_lines.h"
+#include "methods/crest_feature/feature_line_interpolation.h"
+#include "methods/crest_feature/feature_points.h"
+#include "methods/crest_feature/hole_filling.h"
 #include "methods/method.h"
 
 namespace holebench {
 
+struct CrestFeatureOptions {
+  crest_feature::CrestLineOptions crest_lines;
+  crest_feature::FeaturePointOptions feature_points;
+  crest_feature::InterpolationOptions interpolation;
+  crest_feature::HoleFillingOptions filling;  ///< refinement and fairing off by default
+};
+
+/// Runs the method on `holed`; the user step of every hole goes through `user`.
+MethodResult run_crest_feature(const Mesh& holed, User& user,
+                               const CrestFeatureOptions& options = {});
+
 class CrestFeatureMethod final : public Method {
  public:
+  explicit CrestFeatureMethod(CrestFeatureOptions options = {}) : options_(options) {}
   std::string id() const override { return "crest_feature"; }
   std::string description() const override {
-    return "crest-line paper: feature-first fill (not yet implemented)";
+    return "crest-line paper: crest lines, feature points paired by the user, Catmull-Rom "
+           "feature lines, sub-holes filled by projected constrained Delaunay triangulation";
   }
-  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override;
+  MethodResult run(const Mesh& holed, const MethodParameters&, User& user) const override {
+    return run_crest_feature(holed, user, options_);
+  }
+
+ private:
+  CrestFeatureOptions options_;
 };
 
 }  // namespace holebench

@@ -1,0 +1,49 @@
+// Feature line interpolation (crest-line paper, section 3.4.3): Catmull-Rom splines
+// (equation 3) between paired feature points, with the point density of equations 4-5;
+// a corner hole gets three feature lines that meet at the estimated corner.
+#pragma once
+
+#include "methods/crest_feature/feature_points.h"
+#include "methods/crest_feature/hole_identification.h"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace holebench::crest_feature {
+
+/// Equation 3: the point at parameter t in [0, 1] between P1 and P2 of the uniform
+/// Catmull-Rom spline through P0, P1, P2, P3.
+Point catmull_rom(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double t);
+
+/// The least-squares meeting point of three lines (point, direction); nullopt where the
+/// lines are (nearly) parallel.
+std::optional<Point> meeting_point(const std::array<Point, 3>& at,
+                                   const std::array<Point, 3>& direction);
+
+struct FeatureLine {
+  int from = 0;                 ///< loop index of the feature point it starts at
+  int to = -1;                  ///< loop index of the feature point it ends at; -1: the corner
+  std::vector<Point> interior;  ///< interpolated feature points, from -> to, ends excluded
+};
+
+struct FeatureLines {
+  std::vector<FeatureLine> lines;  ///< pairs first, then the corner's three lines
+  std::optional<Point> corner;     ///< where a corner hole's lines meet
+};
+
+struct InterpolationOptions {
+  /// At least this many segments per feature line (>= 2, so that a line always has an
+  /// interpolated point and never coincides with an existing edge).
+  int min_segments = 2;
+};
+
+/// Control points of a pair (F1, F2): P0 and P3 are the adjacent crest points, taken on
+/// each crest line's fitted direction at distance d = |F1 F2| outward from F1 and F2 (the
+/// uniform spacing equation 3 assumes). Equations 4-5: t advances by a / d, i.e. the line
+/// gets round(d / a) segments. A corner triple's lines run from each F_i to the meeting
+/// point C of the three tangent lines, with P3 = 2C - F_i (straight into the corner).
+FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& features,
+                                       const InterpolationOptions& options = {});
+
+}  // namespace holebench::crest_feature

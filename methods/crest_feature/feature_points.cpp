@@ -1,0 +1,315 @@
+#include "methods/crest_feature/feature_points.h"
+
+#include "core/geometry.h"
+#include "methods/crest_feature/feature_line_interpolation.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <tuple>
+
+namespace holebench::crest_feature {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+Point normalized(const Point& p) {
+  const double n = p.norm();
+  return n > 0 ? p / n : p;
+}
+
+double angle(const Point& a, const Point& b) {
+  const double c = OpenMesh::dot(normalized(a), normalized(b));
+  return std::acos(std::clamp(c, -1.0, 1.0));
+}
+
+int nearest_boundary_index(const Mesh& mesh, const Hole& hole, const Point& p) {
+  int best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < hole.vertices.size(); ++i) {
+    const double d = (mesh.point(hole.vertices[i]) - p).norm();
+    if (d < best_distance) {
+      best_distance = d;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+// Orients `t` into the hole: towards the hole's centroid side at the feature point.
+Point into_hole(const Point& t, const Point& at, const Hole& hole) {
+  return OpenMesh::dot(t, hole.centroid - at) < 0 ? -t : t;
+}
+
+// A candidate feature point: where the end of a crest line meets the boundary.
+struct Candidate {
+  int loop_index;
+  Point tangent;
+  int line;
+  double weight;  // the line's strength near the hole
+};
+
+// Points of `line` within `radius` of `p`, the point p excluded.
+std::vector<Point> line_points_near(const CrestLine& line, const Point& p, double radius) {
+  std::vector<Point> near;
+  for (const Point& q : line.points) {
+    const double d = (q - p).norm();
+    if (d <= radius && d > 1e-12 * radius)
+      near.push_back(q);
+  }
+  return near;
+}
+
+// The direction of a crest line that runs out at `end`: the principal axis of its points
+// near the end (robust to the zigzag of crest points about a crease), oriented from their
+// mean towards the end. Zero where the points do not reach far enough from the end.
+Point run_out_direction(const std::vector<Point>& near, const Point& end, double min_extent) {
+  if (near.size() < 2)
+    return Point(0, 0, 0);
+  Point mean(0, 0, 0);
+  for (const Point& q : near)
+    mean += q;
+  mean /= static_cast<double>(near.size());
+  if ((end - mean).norm() < min_extent)
+    return Point(0, 0, 0);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Point& q : near) {
+    const Eigen::Vector3d d(q[0] - mean[0], q[1] - mean[1], q[2] - mean[2]);
+    covariance += d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  const Eigen::Vector3d axis = solver.eigenvectors().col(2);
+  Point t(axis[0], axis[1], axis[2]);
+  return OpenMesh::dot(t, end - mean) < 0 ? -t : t;
+}
+
+}  // namespace
+
+Point estimate_tangent(const Mesh& mesh, const Hole& hole, const CrestLines& crest, int loop_index,
+                       int preferred, const FeaturePointOptions& options) {
+  const Point f = mesh.point(hole.vertices[loop_index]);
+  const double radius = options.tangent_radius_edges * hole.average_edge_length;
+  int line = preferred;
+  if (line < 0) {
+    double best = radius;
+    for (std::size_t i = 0; i < crest.lines.size(); ++i) {
+      for (const Point& q : crest.lines[i].points) {
+        const double d = (q - f).norm();
+        if (d < best) {
+          best = d;
+          line = static_cast<int>(i);
+        }
+      }
+    }
+  }
+  if (line >= 0) {
+    const Point t = run_out_direction(line_points_near(crest.lines[line], f, radius), f,
+                                      0.5 * hole.average_edge_length);
+    if (t.norm() > 0)
+      return into_hole(normalized(t), f, hole);
+  }
+  // No crest line near: the crease between the boundary triangles on either side.
+  const int n = static_cast<int>(hole.vertices.size());
+  Point before(0, 0, 0), after(0, 0, 0);
+  for (int k = 0; k < 3; ++k) {
+    const auto h_before = hole.loop.halfedges[(loop_index - 1 - k + 2 * n) % n];
+    const auto h_after = hole.loop.halfedges[(loop_index + k) % n];
+    before += face_normal(mesh, mesh.opposite_face_handle(h_before));
+    after += face_normal(mesh, mesh.opposite_face_handle(h_after));
+  }
+  Point t = OpenMesh::cross(before, after);
+  if (t.norm() < 1e-3 * before.norm() * after.norm())
+    t = hole.centroid - f;
+  return into_hole(normalized(t), f, hole);
+}
+
+HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const CrestLines& crest,
+                                   const FeaturePointOptions& options) {
+  const double a = hole.average_edge_length;
+  const double reach = options.reach_edges * a;
+  std::vector<Candidate> candidates;
+  for (std::size_t l = 0; l < crest.lines.size(); ++l) {
+    const auto& points = crest.lines[l].points;
+    if (points.size() < 2)
+      continue;
+    for (int end = 0; end < 2; ++end) {
+      const Point e = end == 0 ? points.front() : points.back();
+      // Quick reject: the end is not near this hole.
+      if ((e - hole.centroid).norm() > hole.radius + reach)
+        continue;
+      // The direction in which the line runs out at this end: from its points within the
+      // tangent radius to the end point.
+      const auto near = line_points_near(crest.lines[l], e, options.tangent_radius_edges * a);
+      const Point tangent = run_out_direction(near, e, 0.5 * a);
+      if (tangent.norm() == 0.0)
+        continue;
+      // The boundary vertex the extrapolated line passes nearest, ahead of the end.
+      int best = -1;
+      double best_distance = options.ray_tolerance_edges * a;
+      for (std::size_t i = 0; i < hole.vertices.size(); ++i) {
+        const Point d = mesh.point(hole.vertices[i]) - e;
+        const double s = OpenMesh::dot(d, tangent);
+        if (s < -a || s > reach)
+          continue;
+        const double off = (d - tangent * std::max(s, 0.0)).norm();
+        if (off < best_distance) {
+          best_distance = off;
+          best = static_cast<int>(i);
+        }
+      }
+      if (best < 0)
+        continue;
+      // The tangent into the hole is the line's direction as it runs out.
+      candidates.push_back({best, tangent, static_cast<int>(l),
+                            crest.lines[l].mean_curvature * static_cast<double>(near.size())});
+    }
+  }
+  // Merge candidates that are one feature point: the stronger line wins.
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+    return std::tie(y.weight, x.loop_index, x.line) < std::tie(x.weight, y.loop_index, y.line);
+  });
+  HoleFeatures features;
+  for (const auto& c : candidates) {
+    const Point p = mesh.point(hole.vertices[c.loop_index]);
+    bool merged = false;
+    for (const auto& kept : features.points) {
+      merged = merged || (kept.position - p).norm() <= options.merge_edges * a;
+    }
+    if (merged)
+      continue;
+    features.points.push_back({c.loop_index, p, c.tangent, c.line});
+  }
+  // Loop order, so that the result does not depend on the strengths' ties.
+  std::sort(
+      features.points.begin(), features.points.end(),
+      [](const FeaturePoint& x, const FeaturePoint& y) { return x.loop_index < y.loop_index; });
+
+  // The automatic rule (no user): a corner triple first where one fits better than any
+  // pair among its points, then pairs, best first.
+  const int n = static_cast<int>(features.points.size());
+  auto pair_cost = [&](int i, int j) {
+    const auto& p = features.points[i];
+    const auto& q = features.points[j];
+    const Point u = q.position - p.position;
+    return std::max(angle(p.tangent, u), angle(q.tangent, -u));
+  };
+  std::vector<char> used(n, 0);
+  if (n >= 3 && n <= 12) {
+    double best_cost = options.corner_max_angle_degrees * kDegree;
+    std::optional<std::array<int, 3>> best;
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        for (int k = j + 1; k < n; ++k) {
+          const std::array<int, 3> triple{i, j, k};
+          std::array<Point, 3> at, dir;
+          for (int m = 0; m < 3; ++m) {
+            at[m] = features.points[triple[m]].position;
+            dir[m] = features.points[triple[m]].tangent;
+          }
+          const auto corner = meeting_point(at, dir);
+          if (!corner || (*corner - hole.centroid).norm() > hole.radius)
+            continue;
+          double cost = 0.0;
+          for (int m = 0; m < 3; ++m)
+            cost = std::max(cost, angle(dir[m], *corner - at[m]));
+          const double pairs = std::min({pair_cost(i, j), pair_cost(i, k), pair_cost(j, k)});
+          if (cost < best_cost && cost < pairs) {
+            best_cost = cost;
+            best = triple;
+          }
+        }
+      }
+    }
+    if (best) {
+      features.corner = best;
+      for (int m : *best)
+        used[m] = 1;
+    }
+  }
+  std::vector<std::tuple<double, int, int>> pairs;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const double cost = pair_cost(i, j);
+      if (cost <= options.pair_max_angle_degrees * kDegree)
+        pairs.emplace_back(cost, i, j);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (const auto& [cost, i, j] : pairs) {
+    if (used[i] || used[j])
+      continue;
+    used[i] = used[j] = 1;
+    features.pairs.push_back({i, j});
+  }
+  return features;
+}
+
+HoleFeatures review_feature_points(const Mesh& mesh, const Hole& hole, int hole_index,
+                                   const CrestLines& crest, const HoleFeatures& proposed,
+                                   User& user, const FeaturePointOptions& options) {
+  FeaturePointProposal proposal;
+  proposal.hole_index = hole_index;
+  proposal.hole_centroid = hole.centroid;
+  for (auto v : hole.vertices)
+    proposal.boundary.push_back(mesh.point(v));
+  for (const auto& p : proposed.points)
+    proposal.feature_points.push_back(p.position);
+  proposal.pairs = proposed.pairs;
+  proposal.corner = proposed.corner;
+
+  const FeaturePointProposal answer = user.review_feature_points(proposal);
+
+  HoleFeatures result;
+  for (const Point& p : answer.feature_points) {
+    const int index = nearest_boundary_index(mesh, hole, p);
+    // A point the method detected keeps its tangent; a moved or added point takes it from
+    // the crest line of the nearest detected point, or from the nearest crest line.
+    const FeaturePoint* same = nullptr;
+    const FeaturePoint* nearest = nullptr;
+    double nearest_distance = options.merge_edges * hole.average_edge_length;
+    for (const auto& q : proposed.points) {
+      if (q.loop_index == index)
+        same = &q;
+      const double d = (q.position - mesh.point(hole.vertices[index])).norm();
+      if (d <= nearest_distance) {
+        nearest_distance = d;
+        nearest = &q;
+      }
+    }
+    if (same) {
+      result.points.push_back(*same);
+      continue;
+    }
+    FeaturePoint point;
+    point.loop_index = index;
+    point.position = mesh.point(hole.vertices[index]);
+    point.crest_line = nearest ? nearest->crest_line : -1;
+    point.tangent = estimate_tangent(mesh, hole, crest, index, point.crest_line, options);
+    result.points.push_back(point);
+  }
+  const int n = static_cast<int>(result.points.size());
+  auto valid = [&](int i) { return i >= 0 && i < n; };
+  std::set<int> used;
+  if (answer.corner) {
+    const auto& c = *answer.corner;
+    const std::set<int> distinct(c.begin(), c.end());
+    if (distinct.size() == 3 && valid(c[0]) && valid(c[1]) && valid(c[2])) {
+      result.corner = c;
+      used.insert(c.begin(), c.end());
+    }
+  }
+  for (const auto& p : answer.pairs) {
+    if (valid(p[0]) && valid(p[1]) && p[0] != p[1] && !used.count(p[0]) && !used.count(p[1]) &&
+        result.points[p[0]].loop_index != result.points[p[1]].loop_index) {
+      result.pairs.push_back(p);
+      used.insert(p[0]);
+      used.insert(p[1]);
+    }
+  }
+  return result;
+}
+
+}  // namespace holebench::crest_feature

@@ -1,0 +1,68 @@
+// Feature points (crest-line paper, sections 3.4.1 and 3.4.2): detected feature points
+// where crest lines meet a hole boundary; the automatic pairing rule and corner rule used
+// when no user answers; and the user step (pairing, adjusting, naming the corner triple)
+// through the methods' User interface.
+#pragma once
+
+#include "methods/crest_feature/crest_lines.h"
+#include "methods/crest_feature/hole_identification.h"
+#include "methods/user.h"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace holebench::crest_feature {
+
+struct FeaturePointOptions {
+  /// A crest line whose end lies within this many mean boundary edge lengths a (eq. 4) of
+  /// the hole boundary, extrapolated along its direction, meets the boundary there.
+  double reach_edges = 4.0;
+  /// A crest line ray passes a boundary vertex if it comes within this many a of it.
+  double ray_tolerance_edges = 1.5;
+  /// Crest points within this many a of a feature point give its tangent.
+  double tangent_radius_edges = 6.0;
+  /// Detected feature points closer than this many a are one (the stronger line wins).
+  double merge_edges = 2.5;
+  /// Automatic rule: two feature points are paired if the chord between them is within this
+  /// angle of both tangents (degrees), best pairs first.
+  double pair_max_angle_degrees = 35.0;
+  /// Automatic rule: three feature points are a corner triple if their tangent lines pass
+  /// within this angle (degrees) of their least-squares meeting point inside the hole, and
+  /// fit it better than any pair among them.
+  double corner_max_angle_degrees = 25.0;
+};
+
+struct FeaturePoint {
+  int loop_index = 0;  ///< index into Hole::vertices
+  Point position{0, 0, 0};
+  Point tangent{0, 0, 0};  ///< unit: the crest line's direction as it enters the hole
+  int crest_line = -1;     ///< index into CrestLines::lines; -1 none
+};
+
+struct HoleFeatures {
+  std::vector<FeaturePoint> points;
+  std::vector<std::array<int, 2>> pairs;     ///< one feature line per pair
+  std::optional<std::array<int, 3>> corner;  ///< three feature lines meeting at a corner
+};
+
+/// 3.4.1: the feature points of `hole` (crest lines ending at its boundary), then the
+/// automatic rule of 3.4.2 (what the method proposes before a user answers): corner triple
+/// first if one fits, then pairs by the angle rule. Deterministic.
+HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const CrestLines& crest,
+                                   const FeaturePointOptions& options = {});
+
+/// 3.4.2: asks `user` about `proposed` and returns its answer, feature points snapped to the
+/// hole's boundary vertices, tangents re-estimated from the crest lines where a point moved
+/// or was added. Invalid pairs or triples in the answer are dropped.
+HoleFeatures review_feature_points(const Mesh& mesh, const Hole& hole, int hole_index,
+                                   const CrestLines& crest, const HoleFeatures& proposed,
+                                   User& user, const FeaturePointOptions& options = {});
+
+/// The unit tangent at boundary vertex `loop_index` from the crest points of line
+/// `preferred` (or of the crest line nearest the point), pointing into the hole; from the
+/// normals of the boundary triangles on either side where no crest line is near.
+Point estimate_tangent(const Mesh& mesh, const Hole& hole, const CrestLines& crest, int loop_index,
+                       int preferred, const FeaturePointOptions& options);
+
+}  // namespace holebench::crest_feature

@@ -1,0 +1,64 @@
+// Hole filling (crest-line paper, section 3.5): each sub-hole's boundary is projected onto
+// the plane of equation 6 (normal = sum of the normals of its boundary triangles),
+// triangulated by a constrained Delaunay triangulation (CGAL), mapped back to 3D by applying
+// the triangulation's topology to the 3D boundary points, and stitched into the mesh.
+// Refinement and fairing are an option, off by default as in the paper.
+#pragma once
+
+#include "core/mesh.h"
+#include "methods/crest_feature/hole_partitioning.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace holebench::crest_feature {
+
+struct HoleFillingOptions {
+  /// Refine the patch to the density of its surroundings and fair it (CGAL
+  /// Polygon_mesh_processing::refine and fair; feature-line vertices stay fixed). The paper
+  /// does neither.
+  bool refine_and_fair = false;
+  double density_control_factor = std::sqrt(2.0);
+  /// Where no projection plane gives a simple polygon (equation 6, then Newell's normal, then
+  /// the least-squares plane), triangulate the sub-hole's 3D boundary by CGAL's
+  /// triangulate_hole_polyline instead of leaving it open (not in the paper).
+  bool polyline_fallback = true;
+  /// Where the patch cannot be stitched, close the hole without feature lines
+  /// (fill_hole_without_features) instead of leaving it open (not in the paper).
+  bool triangulate_hole_fallback = true;
+};
+
+struct SubHoleFilling {
+  bool ok = false;
+  /// The plane the boundary was projected on: "equation 6", or the fallback that worked
+  /// where equation 6's projection intersects itself ("newell", "least squares", or none:
+  /// the 3D fallback).
+  std::string plane;
+  std::string error;
+};
+
+struct HoleFillingResult {
+  std::vector<SubHoleFilling> sub_holes;
+  std::size_t new_faces = 0;
+  std::size_t new_vertices = 0;
+  bool closed = false;  ///< every sub-hole triangulated and every face stitched
+  std::string error;
+};
+
+/// Fills every sub-hole of `partition` in `mesh` (new vertices and faces are
+/// Provenance::New). Faces are stitched only if every sub-hole triangulates; otherwise the
+/// mesh is left unchanged and the result says why.
+HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
+                            const HoleFillingOptions& options = {});
+
+/// Not in the paper: where the patch cannot be stitched (a triangle would reuse an edge the
+/// mesh already has), the whole hole is filled by CGAL's triangulate_hole (minimum-weight,
+/// no feature lines) from its boundary halfedge `border`. Returns the new faces.
+std::size_t fill_hole_without_features(Mesh& mesh, HalfedgeHandle border);
+
+/// Equation 6: the sum of the normals of the sub-hole's boundary triangles (the faces
+/// across its edges that are boundary edges of the mesh); zero if it has none.
+Point projection_normal(const Mesh& mesh, const std::vector<Node>& sub_hole);
+
+}  // namespace holebench::crest_feature
