@@ -2,6 +2,7 @@
 
 #include "core/geometry.h"
 #include "core/mesh_io.h"
+#include "harness/record_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,23 +25,8 @@ std::string case_folder_name(const std::string& id) {
 
 namespace {
 
-nlohmann::ordered_json point_json(const Point& p) { return {p[0], p[1], p[2]}; }
-
-nlohmann::ordered_json labels_json(const HoleLabels& labels) {
-  nlohmann::ordered_json j;
-  j["k"] = labels.k;
-  j["regions"] = labels.regions;
-  auto& transitions = j["transitions"] = nlohmann::ordered_json::array();
-  for (auto t : labels.transitions) transitions.push_back(to_string(t));
-  j["orientation"] = to_string(labels.orientation);
-  auto& kinds = j["boundary_kinds"] = nlohmann::ordered_json::array();
-  for (auto b : labels.boundary_kinds) kinds.push_back(to_string(b));
-  j["linearly_dependent_faces"] = labels.linearly_dependent_faces;
-  j["size"] = labels.size;
-  j["structure_size"] = labels.structure_size;
-  j["expected_decision"] = to_string(labels.expected_decision);
-  j["known_weak_spot"] = labels.known_weak_spot;
-  return j;
+nlohmann::ordered_json point_json(const Point& p) {
+  return {p[0], p[1], p[2]};
 }
 
 }  // namespace
@@ -69,17 +55,20 @@ void export_case(const Case& c, const std::filesystem::path& dir) {
     auto& edges = h["missing_edges"] = nlohmann::ordered_json::array();
     for (const auto& polyline : hole.missing_edges) {
       nlohmann::ordered_json line = nlohmann::ordered_json::array();
-      for (const Point& p : polyline) line.push_back(point_json(p));
+      for (const Point& p : polyline)
+        line.push_back(point_json(p));
       edges.push_back(line);
     }
     auto& corners = h["missing_corners"] = nlohmann::ordered_json::array();
-    for (const Point& p : hole.missing_corners) corners.push_back(point_json(p));
-    h["labels"] = hole.labels ? labels_json(*hole.labels) : nlohmann::ordered_json();
+    for (const Point& p : hole.missing_corners)
+      corners.push_back(point_json(p));
+    h["labels"] = hole.labels ? labels_to_json(*hole.labels) : nlohmann::ordered_json();
     holes.push_back(h);
   }
   std::ofstream out(dir / "case.json");
   out << j.dump(2) << '\n';
-  if (!out) throw std::runtime_error("cannot write " + (dir / "case.json").string());
+  if (!out)
+    throw std::runtime_error("cannot write " + (dir / "case.json").string());
 }
 
 }  // namespace holebench::harness

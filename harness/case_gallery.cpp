@@ -2,6 +2,7 @@
 
 #include "core/geometry.h"
 #include "harness/case_export.h"
+#include "harness/markup_escape.h"
 #include "harness/render/case_view.h"
 
 #include <fmt/format.h>
@@ -15,42 +16,38 @@ namespace holebench::harness {
 std::string labels_summary(const Case& c) {
   std::string text;
   for (const auto& hole : c.holes) {
-    if (!text.empty()) text += "; ";
+    if (!text.empty())
+      text += "; ";
     if (!hole.labels) {
       text += hole.target + " (no labels)";
       continue;
     }
     const auto& l = *hole.labels;
     std::string transitions;
-    for (auto t : l.transitions) transitions += std::string(transitions.empty() ? "" : ",") + to_string(t);
+    for (auto t : l.transitions)
+      transitions += std::string(transitions.empty() ? "" : ",") + to_string(t);
     std::string kinds;
-    for (auto b : l.boundary_kinds) kinds += std::string(kinds.empty() ? "" : ",") + to_string(b);
+    for (auto b : l.boundary_kinds)
+      kinds += std::string(kinds.empty() ? "" : ",") + to_string(b);
     text += fmt::format("k={} {}", l.k, to_string(l.orientation));
-    if (!transitions.empty()) text += " [" + transitions + "]";
-    if (!kinds.empty()) text += " boundary " + kinds;
-    if (l.linearly_dependent_faces) text += " parallel faces";
-    text += fmt::format(" size {:.3g} vs {:.3g}: {}", l.size, l.structure_size, to_string(l.expected_decision));
-    if (!l.known_weak_spot.empty()) text += " (weak spot: " + l.known_weak_spot + ")";
+    if (!transitions.empty())
+      text += " [" + transitions + "]";
+    if (!kinds.empty())
+      text += " boundary " + kinds;
+    if (l.linearly_dependent_faces)
+      text += " parallel faces";
+    text += fmt::format(" size {:.3g} vs {:.3g}: {}", l.size, l.structure_size,
+                        to_string(l.expected_decision));
+    if (!l.known_weak_spot.empty())
+      text += " (weak spot: " + l.known_weak_spot + ")";
   }
   return text;
 }
 
-namespace {
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
-}  // namespace
-
 std::filesystem::path write_case_gallery(const generators::CaseCatalog& catalog,
                                          const std::vector<generators::CaseDescriptor>& cases,
-                                         const std::filesystem::path& dir, const GalleryOptions& options) {
+                                         const std::filesystem::path& dir,
+                                         const GalleryOptions& options) {
   std::filesystem::create_directories(dir / "gallery");
   std::string cells;
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -60,14 +57,19 @@ std::filesystem::path write_case_gallery(const generators::CaseCatalog& catalog,
     snapshot.width = options.width;
     snapshot.height = options.height;
     const auto overlay = render::hole_overlay(c.input, 0.08 * bounding_box_diagonal(c.complete));
-    render::write_png(render::render_snapshot(c.input, render::hole_camera(c), snapshot, overlay), dir / file);
-    cells += fmt::format("<figure><img src=\"{}\" width=\"{}\" height=\"{}\"><figcaption><b>{}</b><br>{}</figcaption></figure>\n",
-                         file, options.width, options.height, html_escape(c.id), html_escape(labels_summary(c)));
-    if (options.progress) std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, cases.size(), c.id.c_str());
+    render::write_png(render::render_snapshot(c.input, render::hole_camera(c), snapshot, overlay),
+                      dir / file);
+    cells += fmt::format(
+        "<figure><img src=\"{}\" width=\"{}\" "
+        "height=\"{}\"><figcaption><b>{}</b><br>{}</figcaption></figure>\n",
+        file, options.width, options.height, xml_escape(c.id), xml_escape(labels_summary(c)));
+    if (options.progress)
+      std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, cases.size(), c.id.c_str());
   }
   const auto page = dir / "gallery.html";
   std::ofstream out(page);
-  out << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>holebench case gallery</title>\n"
+  out << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>holebench case "
+         "gallery</title>\n"
          "<style>body{font-family:sans-serif;margin:1em}figure{display:inline-block;margin:6px;"
          "width:"
       << options.width
@@ -77,7 +79,8 @@ std::filesystem::path write_case_gallery(const generators::CaseCatalog& catalog,
          "hole as a black stroke (as in figure 5 of the B-Rep paper). Labels come from the "
          "construction.</p>\n"
       << cells << "</body></html>\n";
-  if (!out) throw std::runtime_error("cannot write " + page.string());
+  if (!out)
+    throw std::runtime_error("cannot write " + page.string());
   return page;
 }
 

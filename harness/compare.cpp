@@ -1,5 +1,7 @@
 #include "harness/compare.h"
 
+#include "harness/markup_escape.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -379,44 +381,6 @@ void print_comparison(const Comparison& comparison, std::FILE* out) {
 // --- JUnit XML ------------------------------------------------------------------------------
 
 namespace {
-
-/// Escapes text for XML content and attribute values; characters XML 1.0 cannot hold
-/// (control characters other than tab, newline, carriage return) become '?'.
-std::string xml_escape(const std::string& text, bool attribute) {
-  std::string out;
-  for (char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      case '\n':
-        out += attribute ? "&#10;" : "\n";
-        break;
-      case '\r':
-        out += attribute ? "&#13;" : "\r";
-        break;
-      case '\t':
-        out += attribute ? "&#9;" : "\t";
-        break;
-      default:
-        out += (u < 0x20 || u == 0x7f) ? '?' : c;
-    }
-  }
-  return out;
-}
 
 std::string metric_line(const MetricChange& m) {
   return fmt::format("{}: {} -> {} (change {:+.6g}, {}, allowed {})", m.metric, number(m.old_value),

@@ -1,5 +1,7 @@
 #include "harness/report/report.h"
 
+#include "harness/markup_escape.h"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -55,29 +57,7 @@ std::string case_kind_of(const JobRecord& record) {
 }
 
 std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+  return xml_escape(text, true);
 }
 
 /// A path for an href/src attribute: spaces and the like percent-encoded, then escaped.
