@@ -6,6 +6,7 @@
 #include "methods/registry.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <fstream>
@@ -111,19 +112,15 @@ std::vector<std::filesystem::path> table_2(const ResultsData& data, const Figure
       "slice\\_loft & "
       "slice\\_direct & liepa\\_cgal \\\\\n\\midrule\n";
   for (const auto& [key, row] : rows) {
-    const std::string values = fmt::format(
-        "{} | {} | {} | {} | {} | {}", cell(row.input_triangles, "{:.0f}"),
-        cell(row.new_triangles, "{:.0f}"),
+    const std::vector<std::string> values = {
+        cell(row.input_triangles, "{:.0f}"), cell(row.new_triangles, "{:.0f}"),
         cell(row.error.count("slice_loft") ? row.error.at("slice_loft") : std::vector<double>{}),
         cell(row.error.count("slice_direct") ? row.error.at("slice_direct")
                                              : std::vector<double>{}),
-        cell(row.error.count("liepa_cgal") ? row.error.at("liepa_cgal") : std::vector<double>{}),
-        "");
-    md += fmt::format("| {} | {} | {}\n", key.first, key.second, values);
-    std::string tex_values = values;
-    std::replace(tex_values.begin(), tex_values.end(), '|', '&');
-    tex += fmt::format("{} & {} & {}\\\\\n", report::latex_escape(key.first), key.second,
-                       tex_values.substr(0, tex_values.size() - 3));
+        cell(row.error.count("liepa_cgal") ? row.error.at("liepa_cgal") : std::vector<double>{})};
+    md += fmt::format("| {} | {} | {} |\n", key.first, key.second, fmt::join(values, " | "));
+    tex += fmt::format("{} & {} & {} \\\\\n", report::latex_escape(key.first), key.second,
+                       fmt::join(values, " & "));
   }
   tex += "\\bottomrule\n\\end{tabular}\n";
   const std::string note =
