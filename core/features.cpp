@@ -8,7 +8,8 @@ namespace holebench {
 
 std::string Corner::signature() const {
   std::string s;
-  for (Convexity c : edge_convexity) s += c == Convexity::Convex ? 'c' : 'r';
+  for (Convexity c : edge_convexity)
+    s += c == Convexity::Convex ? 'c' : 'r';
   return s;
 }
 
@@ -16,7 +17,8 @@ namespace {
 
 int sharp_degree(const Mesh& mesh, VertexHandle v, const std::vector<char>& sharp) {
   int degree = 0;
-  for (auto e : mesh.ve_range(v)) degree += sharp[e.idx()] ? 1 : 0;
+  for (auto e : mesh.ve_range(v))
+    degree += sharp[e.idx()] ? 1 : 0;
   return degree;
 }
 
@@ -51,7 +53,8 @@ SharpEdgeChain trace_chain(const Mesh& mesh, VertexHandle start, EdgeHandle firs
       chain.closed = true;
       break;
     }
-    if (sharp_degree(mesh, current, analysis.edge_is_sharp) != 2) break;
+    if (sharp_degree(mesh, current, analysis.edge_is_sharp) != 2)
+      break;
     EdgeHandle next;
     for (auto e : mesh.ve_range(current)) {
       if (analysis.edge_is_sharp[e.idx()] && !used[e.idx()] &&
@@ -60,11 +63,12 @@ SharpEdgeChain trace_chain(const Mesh& mesh, VertexHandle start, EdgeHandle firs
         break;
       }
     }
-    if (!next.is_valid()) break;
+    if (!next.is_valid())
+      break;
     edge = next;
   }
-  chain.convexity = 2 * convex >= static_cast<int>(chain.edges.size()) ? Convexity::Convex
-                                                                        : Convexity::Reflex;
+  chain.convexity =
+      2 * convex >= static_cast<int>(chain.edges.size()) ? Convexity::Convex : Convexity::Reflex;
   return chain;
 }
 
@@ -83,11 +87,13 @@ FeatureAnalysis analyse_features(const Mesh& mesh, const FeatureOptions& options
 
   // Corners: three or more sharp edges meet.
   for (auto v : mesh.vertices()) {
-    if (sharp_degree(mesh, v, analysis.edge_is_sharp) < 3) continue;
+    if (sharp_degree(mesh, v, analysis.edge_is_sharp) < 3)
+      continue;
     Corner corner;
     corner.vertex = v;
     for (auto e : mesh.ve_range(v)) {
-      if (analysis.edge_is_sharp[e.idx()]) corner.edge_convexity.push_back(analysis.edge_convexity[e.idx()]);
+      if (analysis.edge_is_sharp[e.idx()])
+        corner.edge_convexity.push_back(analysis.edge_convexity[e.idx()]);
     }
     std::sort(corner.edge_convexity.begin(), corner.edge_convexity.end());
     analysis.corners.push_back(corner);
@@ -99,9 +105,11 @@ FeatureAnalysis analyse_features(const Mesh& mesh, const FeatureOptions& options
   for (int pass = 0; pass < 2; ++pass) {
     for (auto v : mesh.vertices()) {
       const int degree = sharp_degree(mesh, v, analysis.edge_is_sharp);
-      if (degree == 0 || (pass == 0 && degree == 2)) continue;
+      if (degree == 0 || (pass == 0 && degree == 2))
+        continue;
       for (auto e : mesh.ve_range(v)) {
-        if (!analysis.edge_is_sharp[e.idx()] || used[e.idx()]) continue;
+        if (!analysis.edge_is_sharp[e.idx()] || used[e.idx()])
+          continue;
         analysis.chains.push_back(trace_chain(mesh, v, e, analysis, used));
       }
     }

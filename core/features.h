@@ -13,8 +13,8 @@
 namespace holebench {
 
 struct SharpEdgeChain {
-  std::vector<VertexHandle> vertices;  ///< in order along the chain
-  std::vector<EdgeHandle> edges;       ///< edges[i] joins vertices[i] and vertices[i + 1]
+  std::vector<VertexHandle> vertices;       ///< in order along the chain
+  std::vector<EdgeHandle> edges;            ///< edges[i] joins vertices[i] and vertices[i + 1]
   Convexity convexity = Convexity::Convex;  ///< the convexity of (most of) its edges
   bool closed = false;                      ///< the chain is a loop
   int regions[2] = {kNoRegion, kNoRegion};  ///< the two regions it separates

@@ -27,10 +27,10 @@ struct GuidanceArrow {
 
 /// What a method did with one boundary loop of its input.
 struct HoleReport {
-  int hole_index = 0;           ///< index in the method's own detection order
-  std::size_t loop_size = 0;    ///< boundary edges of the hole
+  int hole_index = 0;             ///< index in the method's own detection order
+  std::size_t loop_size = 0;      ///< boundary edges of the hole
   Point centroid{0.0, 0.0, 0.0};  ///< mean of the loop's vertices (to match ground truth)
-  bool closed = false;          ///< the method produced faces that close it
+  bool closed = false;            ///< the method produced faces that close it
   std::size_t new_faces = 0;
   std::size_t new_vertices = 0;
   /// For methods that classify holes: the labels they computed (same fields as the

@@ -20,7 +20,8 @@ class LatticePoints {
   int at(int x, int y, int z) {
     const Lattice key{x, y, z};
     auto it = index_.find(key);
-    if (it != index_.end()) return it->second;
+    if (it != index_.end())
+      return it->second;
     soup_.points.emplace_back(x * step_, y * step_, z * step_);
     const int index = static_cast<int>(soup_.points.size()) - 1;
     index_.emplace(key, index);
@@ -44,7 +45,8 @@ Mesh segmented(const TriangleSoup& soup, const char* source) {
 Mesh make_orthogonal_solid(const OrthogonalSolidOptions& options) {
   const std::set<Lattice> solid = [&] {
     std::set<Lattice> s;
-    for (const auto& v : options.voxels) s.insert({v[0], v[1], v[2]});
+    for (const auto& v : options.voxels)
+      s.insert({v[0], v[1], v[2]});
     return s;
   }();
   const int n = options.subdivisions;
@@ -58,7 +60,8 @@ Mesh make_orthogonal_solid(const OrthogonalSolidOptions& options) {
       for (int side = 0; side < 2; ++side) {
         int neighbour[3] = {cell[0], cell[1], cell[2]};
         neighbour[axis] += side == 0 ? -1 : 1;
-        if (solid.count({neighbour[0], neighbour[1], neighbour[2]})) continue;
+        if (solid.count({neighbour[0], neighbour[1], neighbour[2]}))
+          continue;
         for (int i = 0; i < n; ++i) {
           for (int j = 0; j < n; ++j) {
             auto corner = [&](int di, int dj) {
@@ -69,7 +72,8 @@ Mesh make_orthogonal_solid(const OrthogonalSolidOptions& options) {
               return points.at(l[0], l[1], l[2]);
             };
             std::array<int, 4> q{corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)};
-            if (side == 0) std::swap(q[1], q[3]);
+            if (side == 0)
+              std::swap(q[1], q[3]);
             if ((i + j) % 2 == 0) {
               soup.triangles.push_back({q[0], q[1], q[2]});
               soup.triangles.push_back({q[0], q[2], q[3]});
@@ -105,7 +109,8 @@ TriangleSoup revolve(const std::vector<Ring>& rings, int segments) {
     }
     for (int s = 0; s < segments; ++s) {
       const double angle = 2.0 * M_PI * s / segments;
-      soup.points.emplace_back(ring.radius * std::cos(angle), ring.radius * std::sin(angle), ring.z);
+      soup.points.emplace_back(ring.radius * std::cos(angle), ring.radius * std::sin(angle),
+                               ring.z);
     }
   }
   // Consecutive rings are joined; the profile runs from the bottom pole to the top pole, so
@@ -117,9 +122,12 @@ TriangleSoup revolve(const std::vector<Ring>& rings, int segments) {
       const int s1 = (s + 1) % segments;
       const int a0 = first[r] + (pole_a ? 0 : s), a1 = first[r] + (pole_a ? 0 : s1);
       const int b0 = first[r + 1] + (pole_b ? 0 : s), b1 = first[r + 1] + (pole_b ? 0 : s1);
-      if (!pole_a) soup.triangles.push_back({a0, a1, b1});
-      if (!pole_b) soup.triangles.push_back({a0, b1, b0});
-      if (pole_a && pole_b) throw std::invalid_argument("two consecutive poles");
+      if (!pole_a)
+        soup.triangles.push_back({a0, a1, b1});
+      if (!pole_b)
+        soup.triangles.push_back({a0, b1, b0});
+      if (pole_a && pole_b)
+        throw std::invalid_argument("two consecutive poles");
     }
   }
   return soup;
@@ -129,7 +137,8 @@ void add_rings(std::vector<Ring>& rings, Ring from, Ring to, double spacing, boo
   const double length = std::hypot(to.radius - from.radius, to.z - from.z);
   const int steps = std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9)));
   for (int i = 1; i <= steps; ++i) {
-    if (i == steps && !include_last) break;
+    if (i == steps && !include_last)
+      break;
     const double t = static_cast<double>(i) / steps;
     rings.push_back({from.radius + t * (to.radius - from.radius), from.z + t * (to.z - from.z)});
   }
@@ -165,7 +174,8 @@ Mesh make_procedural_solid(const std::string& name) {
     // Three steps: two reflex edges between treads and risers.
     for (int y = 0; y < 2; ++y) {
       for (int x = 0; x < 3; ++x) {
-        for (int z = 0; z <= 2 - x; ++z) o.voxels.push_back({x, y, z});
+        for (int z = 0; z <= 2 - x; ++z)
+          o.voxels.push_back({x, y, z});
       }
     }
   } else if (name == "notched_block") {
@@ -174,7 +184,8 @@ Mesh make_procedural_solid(const std::string& name) {
     for (int x = 0; x < 2; ++x) {
       for (int y = 0; y < 2; ++y) {
         for (int z = 0; z < 2; ++z) {
-          if (!(x == 1 && y == 1 && z == 1)) o.voxels.push_back({x, y, z});
+          if (!(x == 1 && y == 1 && z == 1))
+            o.voxels.push_back({x, y, z});
         }
       }
     }
@@ -182,7 +193,8 @@ Mesh make_procedural_solid(const std::string& name) {
     // A 3x3x1 plate with one voxel on its middle: where the block's vertical edges meet the
     // plate, the corners are crr.
     for (int x = 0; x < 3; ++x) {
-      for (int y = 0; y < 3; ++y) o.voxels.push_back({x, y, 0});
+      for (int y = 0; y < 3; ++y)
+        o.voxels.push_back({x, y, 0});
     }
     o.voxels.push_back({1, 1, 1});
   } else if (name == "cylinder") {

@@ -27,7 +27,7 @@ struct PunchTarget {
   /// "face_interior", "edge_convex", "edge_reflex", "corner_<signature>" (e.g.
   /// "corner_ccr"), "multi_feature", "curved_face", "cone_apex", "island".
   std::string kind;
-  VertexHandle vertex;  ///< the hole's centre: a vertex of the complete mesh
+  VertexHandle vertex;      ///< the hole's centre: a vertex of the complete mesh
   double min_radius = 0.0;  ///< the hole must be at least this large to reach its features
 };
 

@@ -19,7 +19,8 @@ struct Frame {
 
 Frame frame_at(const Mesh& mesh, VertexHandle vertex) {
   Point n(0, 0, 0);
-  for (auto f : mesh.vf_range(vertex)) n += face_normal(mesh, f) * face_area(mesh, f);
+  for (auto f : mesh.vf_range(vertex))
+    n += face_normal(mesh, f) * face_area(mesh, f);
   n = n.norm() > 0 ? n / n.norm() : Point(0, 0, 1);
   const Point helper = std::abs(n[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0);
   Point u = OpenMesh::cross(n, helper);
@@ -53,39 +54,46 @@ std::vector<int> select_faces(const Mesh& mesh, VertexHandle target, const Frame
   // Seeds: for a disc the faces at the target; for an annulus every face of the ring
   // reachable from the ones nearest the target.
   if (inner_ratio == 0.0) {
-    for (auto f : mesh.vf_range(target)) stack.push_back(f);
+    for (auto f : mesh.vf_range(target))
+      stack.push_back(f);
   } else {
     FaceHandle nearest;
     double best = std::numeric_limits<double>::infinity();
     for (auto f : mesh.faces()) {
-      if (!inside(f)) continue;
+      if (!inside(f))
+        continue;
       const double d = (face_centroid(mesh, f) - centre).norm();
       if (d < best) {
         best = d;
         nearest = f;
       }
     }
-    if (nearest.is_valid()) stack.push_back(nearest);
+    if (nearest.is_valid())
+      stack.push_back(nearest);
   }
-  for (auto f : stack) chosen[f.idx()] = 1;
+  for (auto f : stack)
+    chosen[f.idx()] = 1;
   while (!stack.empty()) {
     const FaceHandle f = stack.back();
     stack.pop_back();
     for (auto g : mesh.ff_range(f)) {
-      if (chosen[g.idx()] || !inside(g)) continue;
+      if (chosen[g.idx()] || !inside(g))
+        continue;
       chosen[g.idx()] = 1;
       stack.push_back(g);
     }
   }
   std::vector<int> faces;
   for (auto f : mesh.faces()) {
-    if (chosen[f.idx()]) faces.push_back(f.idx());
+    if (chosen[f.idx()])
+      faces.push_back(f.idx());
   }
   return faces;
 }
 
 // Sharp edges with both faces removed, chained into polylines.
-std::vector<std::vector<Point>> missing_edges(const AnalysedModel& model, const std::vector<char>& removed) {
+std::vector<std::vector<Point>> missing_edges(const AnalysedModel& model,
+                                              const std::vector<char>& removed) {
   std::vector<std::vector<Point>> polylines;
   const Mesh& mesh = model.mesh;
   for (const auto& chain : model.features.chains) {
@@ -95,14 +103,16 @@ std::vector<std::vector<Point>> missing_edges(const AnalysedModel& model, const 
       const bool gone = removed[mesh.face_handle(mesh.halfedge_handle(e, 0)).idx()] &&
                         removed[mesh.face_handle(mesh.halfedge_handle(e, 1)).idx()];
       if (gone) {
-        if (current.empty()) current.push_back(mesh.point(chain.vertices[i]));
+        if (current.empty())
+          current.push_back(mesh.point(chain.vertices[i]));
         current.push_back(mesh.point(chain.vertices[i + 1]));
       } else if (!current.empty()) {
         polylines.push_back(std::move(current));
         current.clear();
       }
     }
-    if (!current.empty()) polylines.push_back(std::move(current));
+    if (!current.empty())
+      polylines.push_back(std::move(current));
   }
   return polylines;
 }
@@ -112,7 +122,8 @@ std::vector<std::vector<Point>> missing_edges(const AnalysedModel& model, const 
 std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchResult& punched,
                                         const HoleTruth& truth, const PunchedCaseOptions& options) {
   const auto loops = find_boundary_loops(punched.holed);
-  if (loops.size() != 1) return std::nullopt;
+  if (loops.size() != 1)
+    return std::nullopt;
   const Mesh& holed = punched.holed;
   const Mesh& complete = model.mesh;
   HoleLabels labels;
@@ -134,25 +145,30 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
     labels.regions.pop_back();
     transition_vertices.erase(transition_vertices.begin());
   } else {
-    std::rotate(transition_vertices.begin(), transition_vertices.begin() + 1, transition_vertices.end());
+    std::rotate(transition_vertices.begin(), transition_vertices.begin() + 1,
+                transition_vertices.end());
   }
   // Now transition_vertices[i] is where the loop passes from regions[i] to regions[i + 1].
   labels.k = static_cast<int>(labels.regions.size());
   std::set<int> loop_regions(labels.regions.begin(), labels.regions.end());
   for (int f : truth.removed_faces) {
     const int id = region(complete, complete.face_handle(f));
-    if (!loop_regions.count(id) || !model.region_is_planar[id]) return std::nullopt;
+    if (!loop_regions.count(id) || !model.region_is_planar[id])
+      return std::nullopt;
   }
   // Convexity at a transition: the sharp edge of the complete model at the transition
   // vertex between the two regions.
   if (labels.k > 1) {
     for (std::size_t i = 0; i < transition_vertices.size(); ++i) {
-      const auto v = complete.vertex_handle(punched.vertex_to_complete[transition_vertices[i].idx()]);
+      const auto v =
+          complete.vertex_handle(punched.vertex_to_complete[transition_vertices[i].idx()]);
       std::optional<Convexity> convexity;
       for (auto e : complete.ve_range(v)) {
-        if (model.features.edge_is_sharp[e.idx()]) convexity = model.features.edge_convexity[e.idx()];
+        if (model.features.edge_is_sharp[e.idx()])
+          convexity = model.features.edge_convexity[e.idx()];
       }
-      if (!convexity) return std::nullopt;
+      if (!convexity)
+        return std::nullopt;
       labels.transitions.push_back(*convexity);
     }
   }
@@ -161,12 +177,14 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
   // (k = 2), distance to the missing corner (k = 3).
   const auto loop_points = [&] {
     std::vector<Point> p;
-    for (auto v : loop_vertices(holed, loops[0])) p.push_back(holed.point(v));
+    for (auto v : loop_vertices(holed, loops[0]))
+      p.push_back(holed.point(v));
     return p;
   }();
   double size = 0.0;
   if (labels.k == 3 && truth.missing_corners.size() == 1) {
-    for (const Point& p : loop_points) size = std::max(size, (p - truth.missing_corners[0]).norm());
+    for (const Point& p : loop_points)
+      size = std::max(size, (p - truth.missing_corners[0]).norm());
   } else if (labels.k == 2 && truth.missing_edges.size() == 1) {
     const auto& edge = truth.missing_edges[0];
     const Point a = edge.front(), b = edge.back();
@@ -177,13 +195,15 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
     }
   } else {
     for (const Point& p : loop_points) {
-      for (const Point& q : loop_points) size = std::max(size, (p - q).norm());
+      for (const Point& q : loop_points)
+        size = std::max(size, (p - q).norm());
     }
   }
   labels.size = size;
   labels.structure_size = options.structure_size_rel_diag * model.diagonal;
-  labels.expected_decision = labels.k <= 3 && size < labels.structure_size ? Decision::CloseAutomatically
-                                                                           : Decision::Guide;
+  labels.expected_decision = labels.k <= 3 && size < labels.structure_size
+                                 ? Decision::CloseAutomatically
+                                 : Decision::Guide;
   return labels;
 }
 
@@ -208,18 +228,23 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
   truth.target = target.kind;
   truth.removed_faces = punched.removed_faces;
   std::vector<char> removed(mesh.n_faces(), 0);
-  for (int f : truth.removed_faces) removed[f] = 1;
+  for (int f : truth.removed_faces)
+    removed[f] = 1;
   truth.missing_edges = missing_edges(model, removed);
   for (const auto& corner : model.features.corners) {
     bool all = true;
-    for (auto f : mesh.vf_range(corner.vertex)) all = all && removed[f.idx()];
-    if (all) truth.missing_corners.push_back(mesh.point(corner.vertex));
+    for (auto f : mesh.vf_range(corner.vertex))
+      all = all && removed[f.idx()];
+    if (all)
+      truth.missing_corners.push_back(mesh.point(corner.vertex));
   }
-  if (target.kind != "island") truth.labels = planar_labels(model, punched, truth, options);
+  if (target.kind != "island")
+    truth.labels = planar_labels(model, punched, truth, options);
   c.holes.push_back(std::move(truth));
   c.input = punched.holed;
   if (!options.keep_input_regions) {
-    for (auto f : c.input.faces()) set_region(c.input, f, kNoRegion);
+    for (auto f : c.input.faces())
+      set_region(c.input, f, kNoRegion);
   }
   return c;
 }

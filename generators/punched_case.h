@@ -10,12 +10,12 @@
 namespace holebench::generators {
 
 struct PunchedCaseOptions {
-  double radius_rel_diag = 0.02;    ///< hole radius, relative to the model's diagonal
-  double irregularity = 0.25;       ///< radius varies by up to this fraction around the hole
-  double island_ratio = 0.45;       ///< island: inner radius / outer radius
+  double radius_rel_diag = 0.02;          ///< hole radius, relative to the model's diagonal
+  double irregularity = 0.25;             ///< radius varies by up to this fraction around the hole
+  double island_ratio = 0.45;             ///< island: inner radius / outer radius
   double structure_size_rel_diag = 0.04;  ///< delta_s for the expected decision
-  std::uint64_t shape_seed = 0;     ///< phases of the irregular boundary
-  bool keep_input_regions = false;  ///< false: the input has no region ids (a real scan)
+  std::uint64_t shape_seed = 0;           ///< phases of the irregular boundary
+  bool keep_input_regions = false;        ///< false: the input has no region ids (a real scan)
 };
 
 /// Removes the faces around `target` (an irregular disc on the surface, grown only through

@@ -44,7 +44,8 @@ class Random {
     while (true) {
       const Point p(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0));
       const double n2 = p.sqrnorm();
-      if (n2 > 1e-6 && n2 <= 1.0) return p / std::sqrt(n2);
+      if (n2 > 1e-6 && n2 <= 1.0)
+        return p / std::sqrt(n2);
     }
   }
 

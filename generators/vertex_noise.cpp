@@ -10,10 +10,12 @@ double noise_reference_length(const Mesh& complete) {
 }
 
 void add_vertex_noise(Mesh& mesh, const NoiseOptions& options) {
-  if (options.percent == 0.0) return;
+  if (options.percent == 0.0)
+    return;
   const double amplitude = options.percent / 100.0 * options.reference_length;
   Random random(options.seed);
-  for (auto v : mesh.vertices()) mesh.point(v) += random.unit_vector() * amplitude;
+  for (auto v : mesh.vertices())
+    mesh.point(v) += random.unit_vector() * amplitude;
 }
 
 }  // namespace holebench::generators

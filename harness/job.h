@@ -42,7 +42,7 @@ struct HoleRecord {
   std::size_t new_faces = 0;
   std::string note;
   Point centroid{0, 0, 0};
-  std::optional<GuidanceArrow> arrow;      ///< the method's guidance arrow, if any
+  std::optional<GuidanceArrow> arrow;        ///< the method's guidance arrow, if any
   std::optional<HoleLabels> classification;  ///< the method's classification, if any
 };
 

@@ -5,26 +5,32 @@
 namespace holebench::harness {
 namespace {
 
-nlohmann::ordered_json point_json(const Point& p) { return {p[0], p[1], p[2]}; }
+nlohmann::ordered_json point_json(const Point& p) {
+  return {p[0], p[1], p[2]};
+}
 
 Point point_from(const nlohmann::json& j) {
-  if (!j.is_array() || j.size() != 3) return Point(0, 0, 0);
+  if (!j.is_array() || j.size() != 3)
+    return Point(0, 0, 0);
   return Point(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
 }
 
 template <typename T>
 T value_or(const nlohmann::json& j, const char* key, T fallback) {
   const auto it = j.find(key);
-  if (it == j.end() || it->is_null()) return fallback;
+  if (it == j.end() || it->is_null())
+    return fallback;
   return it->get<T>();
 }
 
 }  // namespace
 
 JobStatus job_status_from_string(const std::string& name) {
-  for (auto status : {JobStatus::Ok, JobStatus::Partial, JobStatus::MethodFailed, JobStatus::InvalidInput,
-                      JobStatus::Error, JobStatus::Crash, JobStatus::Timeout}) {
-    if (name == to_string(status)) return status;
+  for (auto status :
+       {JobStatus::Ok, JobStatus::Partial, JobStatus::MethodFailed, JobStatus::InvalidInput,
+        JobStatus::Error, JobStatus::Crash, JobStatus::Timeout}) {
+    if (name == to_string(status))
+      return status;
   }
   throw std::invalid_argument("unknown job status '" + name + "'");
 }
@@ -38,7 +44,8 @@ nlohmann::ordered_json context_to_json(const RunContext& context) {
   j["created_utc"] = context.created_utc;
   j["suite"] = context.suite;
   nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
-  for (const auto& [name, version] : context.libraries) libraries[name] = version;
+  for (const auto& [name, version] : context.libraries)
+    libraries[name] = version;
   j["libraries"] = libraries;
   return j;
 }
@@ -53,7 +60,8 @@ RunContext context_from_json(const nlohmann::json& j) {
   context.suite = value_or<std::string>(j, "suite", "");
   if (j.contains("libraries") && j["libraries"].is_object()) {
     for (const auto& [name, version] : j["libraries"].items()) {
-      context.libraries.emplace_back(name, version.is_string() ? version.get<std::string>() : version.dump());
+      context.libraries.emplace_back(
+          name, version.is_string() ? version.get<std::string>() : version.dump());
     }
   }
   return context;
@@ -64,11 +72,13 @@ nlohmann::ordered_json labels_to_json(const HoleLabels& labels) {
   j["k"] = labels.k;
   j["regions"] = labels.regions;
   auto& transitions = j["transitions"] = nlohmann::ordered_json::array();
-  for (auto t : labels.transitions) transitions.push_back(to_string(t));
+  for (auto t : labels.transitions)
+    transitions.push_back(to_string(t));
   j["orientation"] = to_string(labels.orientation);
   j["orientation_known"] = labels.orientation_known;
   auto& kinds = j["boundary_kinds"] = nlohmann::ordered_json::array();
-  for (auto b : labels.boundary_kinds) kinds.push_back(to_string(b));
+  for (auto b : labels.boundary_kinds)
+    kinds.push_back(to_string(b));
   j["linearly_dependent_faces"] = labels.linearly_dependent_faces;
   j["size"] = labels.size;
   j["structure_size"] = labels.structure_size;
@@ -84,8 +94,9 @@ HoleLabels labels_from_json(const nlohmann::json& j) {
   for (const auto& t : value_or<std::vector<std::string>>(j, "transitions", {})) {
     labels.transitions.push_back(t == "reflex" ? Convexity::Reflex : Convexity::Convex);
   }
-  labels.orientation = value_or<std::string>(j, "orientation", "inner") == "outer" ? Orientation::Outer
-                                                                                  : Orientation::Inner;
+  labels.orientation = value_or<std::string>(j, "orientation", "inner") == "outer"
+                           ? Orientation::Outer
+                           : Orientation::Inner;
   labels.orientation_known = value_or(j, "orientation_known", true);
   for (const auto& b : value_or<std::vector<std::string>>(j, "boundary_kinds", {})) {
     labels.boundary_kinds.push_back(b == "inner" ? BoundaryKind::Inner : BoundaryKind::Outer);
@@ -114,25 +125,26 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
   j["status"] = to_string(record.status);
   j["message"] = record.message;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
-  for (const auto& metric : record.metrics) metrics[metric.name] = metric.value;
+  for (const auto& metric : record.metrics)
+    metrics[metric.name] = metric.value;
   j["metrics"] = metrics;
   nlohmann::ordered_json phases = nlohmann::ordered_json::object();
-  for (const auto& phase : record.phases) phases[phase.phase] = phase.seconds;
+  for (const auto& phase : record.phases)
+    phases[phase.phase] = phase.seconds;
   j["phases_s"] = phases;
   j["method_seconds"] = record.method_seconds;
   nlohmann::ordered_json holes = nlohmann::ordered_json::array();
   for (const auto& hole : record.holes) {
-    nlohmann::ordered_json h = {{"hole_index", hole.hole_index},
-                                {"loop_size", hole.loop_size},
-                                {"centroid", point_json(hole.centroid)},
-                                {"closed", hole.closed},
-                                {"new_faces", hole.new_faces},
-                                {"note", hole.note}};
+    nlohmann::ordered_json h = {
+        {"hole_index", hole.hole_index},         {"loop_size", hole.loop_size},
+        {"centroid", point_json(hole.centroid)}, {"closed", hole.closed},
+        {"new_faces", hole.new_faces},           {"note", hole.note}};
     if (hole.arrow) {
       h["arrow"] = {{"position", point_json(hole.arrow->position)},
                     {"direction", point_json(hole.arrow->direction)}};
     }
-    if (hole.classification) h["classification"] = labels_to_json(*hole.classification);
+    if (hole.classification)
+      h["classification"] = labels_to_json(*hole.classification);
     holes.push_back(h);
   }
   j["holes"] = holes;
@@ -158,12 +170,14 @@ JobRecord record_from_json(const nlohmann::json& j) {
   record.message = value_or<std::string>(j, "message", "");
   if (j.contains("metrics") && j["metrics"].is_object()) {
     for (const auto& [name, value] : j["metrics"].items()) {
-      if (value.is_number()) record.metrics.push_back({name, value.get<double>()});
+      if (value.is_number())
+        record.metrics.push_back({name, value.get<double>()});
     }
   }
   if (j.contains("phases_s") && j["phases_s"].is_object()) {
     for (const auto& [name, value] : j["phases_s"].items()) {
-      if (value.is_number()) record.phases.push_back({name, value.get<double>()});
+      if (value.is_number())
+        record.phases.push_back({name, value.get<double>()});
     }
   }
   record.method_seconds = value_or(j, "method_seconds", 0.0);
@@ -172,7 +186,8 @@ JobRecord record_from_json(const nlohmann::json& j) {
       HoleRecord hole;
       hole.hole_index = value_or(h, "hole_index", 0);
       hole.loop_size = value_or<std::size_t>(h, "loop_size", 0);
-      if (h.contains("centroid")) hole.centroid = point_from(h["centroid"]);
+      if (h.contains("centroid"))
+        hole.centroid = point_from(h["centroid"]);
       hole.closed = value_or(h, "closed", false);
       hole.new_faces = value_or<std::size_t>(h, "new_faces", 0);
       hole.note = value_or<std::string>(h, "note", "");

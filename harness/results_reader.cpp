@@ -12,7 +12,8 @@ namespace holebench::harness {
 
 ResultsData read_results_json(const std::filesystem::path& path) {
   std::ifstream in(path);
-  if (!in) throw InvalidInputError(path.string() + ": cannot open the results file");
+  if (!in)
+    throw InvalidInputError(path.string() + ": cannot open the results file");
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
@@ -23,13 +24,15 @@ ResultsData read_results_json(const std::filesystem::path& path) {
     throw InvalidInputError(path.string() + ": no \"results\" array: not a holebench results file");
   }
   ResultsData data;
-  if (j.contains("context")) data.context = context_from_json(j["context"]);
+  if (j.contains("context"))
+    data.context = context_from_json(j["context"]);
   std::size_t index = 0;
   for (const auto& record : j["results"]) {
     try {
       data.records.push_back(record_from_json(record));
     } catch (const std::exception& e) {
-      throw InvalidInputError(path.string() + ": record " + std::to_string(index) + ": " + e.what());
+      throw InvalidInputError(path.string() + ": record " + std::to_string(index) + ": " +
+                              e.what());
     }
     ++index;
   }
@@ -40,16 +43,21 @@ JobRecord record_from_json_text(const std::string& json_text) {
   return record_from_json(nlohmann::json::parse(json_text));
 }
 
-std::string record_to_json_line(const JobRecord& record) { return record_to_json(record).dump(); }
+std::string record_to_json_line(const JobRecord& record) {
+  return record_to_json(record).dump();
+}
 
 ResultsData merge_results(const std::vector<ResultsData>& sets) {
   ResultsData merged;
-  if (!sets.empty()) merged.context = sets.front().context;
+  if (!sets.empty())
+    merged.context = sets.front().context;
   std::map<std::string, JobRecord> by_id;
   for (const auto& set : sets) {
-    for (const auto& record : set.records) by_id[record.job.id()] = record;
+    for (const auto& record : set.records)
+      by_id[record.job.id()] = record;
   }
-  for (auto& [id, record] : by_id) merged.records.push_back(std::move(record));
+  for (auto& [id, record] : by_id)
+    merged.records.push_back(std::move(record));
   return merged;
 }
 

@@ -59,8 +59,8 @@ RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   generators::CatalogOptions catalog_options = options.catalog;
   if (catalog_options.families.empty()) {
-    catalog_options.families =
-        families_of_patterns(options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+    catalog_options.families = families_of_patterns(
+        options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
   }
   const generators::CaseCatalog catalog(catalog_options);
   const std::vector<Job> jobs = plan_jobs(options, catalog);
@@ -73,7 +73,8 @@ RunSummary run_jobs(const RunOptions& options) {
     std::filesystem::create_directories(job_options.snapshot_dir);
   }
   for (const auto& skipped : catalog.skipped()) {
-    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(), skipped.reason.c_str());
+    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
+                 skipped.reason.c_str());
   }
 
   RunSummary summary;
@@ -81,10 +82,12 @@ RunSummary run_jobs(const RunOptions& options) {
   if (options.in_process) {
     for (const auto& job : jobs) {
       summary.records.push_back(run_one(job));
-      if (summary.records.back().status != JobStatus::Ok) ++summary.failures;
+      if (summary.records.back().status != JobStatus::Ok)
+        ++summary.failures;
     }
   } else {
-    RunnerResult result = run_isolated(jobs, run_one, options.out_dir / "records.jsonl", options.runner);
+    RunnerResult result =
+        run_isolated(jobs, run_one, options.out_dir / "records.jsonl", options.runner);
     summary.records = std::move(result.records);
     summary.failures = result.failures;
   }

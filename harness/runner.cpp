@@ -23,7 +23,8 @@ std::vector<JobRecord> read_records_jsonl(const std::filesystem::path& path) {
   std::vector<JobRecord> records;
   std::ifstream in(path);
   for (std::string line; std::getline(in, line);) {
-    if (line.empty()) continue;
+    if (line.empty())
+      continue;
     try {
       records.push_back(record_from_json_text(line));
     } catch (const std::exception&) {
@@ -52,7 +53,8 @@ void write_all(int fd, const std::string& text) {
   while (left > 0) {
     const ssize_t n = ::write(fd, data, left);
     if (n < 0) {
-      if (errno == EINTR) continue;
+      if (errno == EINTR)
+        continue;
       return;
     }
     data += n;
@@ -62,10 +64,12 @@ void write_all(int fd, const std::string& text) {
 
 Child start_child(const Job& job, std::size_t index, const JobFunction& run_one) {
   int fds[2];
-  if (::pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  if (::pipe(fds) != 0)
+    throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   std::fflush(nullptr);
   const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  if (pid < 0)
+    throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
     ::close(fds[0]);
     // The child: run the job, send its record, leave without running the parent's atexit
@@ -126,7 +130,8 @@ class Progress {
   Progress(std::size_t total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(2)) {}
 
   void update(std::size_t done, std::size_t failures, const std::string& last) {
-    if (!enabled_) return;
+    if (!enabled_)
+      return;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
     const double rate = elapsed > 0 ? done / elapsed : 0.0;
     const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
@@ -134,15 +139,18 @@ class Progress {
     const int filled = total_ ? static_cast<int>(width * done / total_) : width;
     char line[512];
     std::snprintf(line, sizeof(line), "[%s%s] %zu/%zu  %.2f jobs/s  ETA %dm%02ds  failures %zu  %s",
-                  std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done, total_,
-                  rate, static_cast<int>(eta) / 60, static_cast<int>(eta) % 60, failures, last.c_str());
+                  std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done,
+                  total_, rate, static_cast<int>(eta) / 60, static_cast<int>(eta) % 60, failures,
+                  last.c_str());
     if (tty_) {
       std::fprintf(stderr, "\r%-150.150s", line);
-      if (done == total_) std::fprintf(stderr, "\n");
+      if (done == total_)
+        std::fprintf(stderr, "\n");
     } else {
       // A log file: a line per job for short runs, every 2 % for long ones.
       const std::size_t step = std::max<std::size_t>(1, total_ / 50);
-      if (done % step == 0 || done == total_) std::fprintf(stderr, "%s\n", line);
+      if (done % step == 0 || done == total_)
+        std::fprintf(stderr, "%s\n", line);
     }
   }
 
@@ -161,18 +169,21 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
   RunnerResult result;
   std::map<std::string, JobRecord> done;
   if (options.resume) {
-    for (auto& record : read_records_jsonl(records_path)) done[record.job.id()] = std::move(record);
+    for (auto& record : read_records_jsonl(records_path))
+      done[record.job.id()] = std::move(record);
   } else {
     std::filesystem::remove(records_path);
   }
   const int fd = ::open(records_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write " + records_path.string() + ": " + std::strerror(errno));
+  if (fd < 0)
+    throw std::runtime_error("cannot write " + records_path.string() + ": " + std::strerror(errno));
   // A line cut short by an interruption is ended, so that the next record starts a line.
   {
     std::ifstream existing(records_path, std::ios::binary | std::ios::ate);
     if (existing && existing.tellg() > 0) {
       existing.seekg(-1, std::ios::end);
-      if (existing.get() != '\n') write_all(fd, "\n");
+      if (existing.get() != '\n')
+        write_all(fd, "\n");
     }
   }
 
@@ -186,12 +197,14 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       pending.push_back(i);
     }
   }
-  const int workers = options.workers > 0 ? options.workers
-                                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int workers = options.workers > 0
+                          ? options.workers
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   Progress progress(jobs.size(), options.progress);
   std::size_t finished = result.resumed;
   std::size_t failures = 0;
-  for (const auto& [id, record] : done) failures += wanted.count(id) && record.status != JobStatus::Ok ? 1 : 0;
+  for (const auto& [id, record] : done)
+    failures += wanted.count(id) && record.status != JobStatus::Ok ? 1 : 0;
 
   std::vector<Child> running;
   std::size_t next = 0;
@@ -201,15 +214,18 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       ++next;
     }
     std::vector<pollfd> fds;
-    for (const auto& child : running) fds.push_back({child.pipe_fd, POLLIN, 0});
+    for (const auto& child : running)
+      fds.push_back({child.pipe_fd, POLLIN, 0});
     ::poll(fds.data(), fds.size(), 100);
     for (std::size_t c = 0; c < running.size(); ++c) {
       Child& child = running[c];
       if (fds[c].revents & (POLLIN | POLLHUP | POLLERR)) {
         char buffer[65536];
         const ssize_t n = ::read(child.pipe_fd, buffer, sizeof(buffer));
-        if (n > 0) child.output.append(buffer, static_cast<std::size_t>(n));
-        if (n > 0) continue;  // more may follow; the pipe closes when the child ends
+        if (n > 0)
+          child.output.append(buffer, static_cast<std::size_t>(n));
+        if (n > 0)
+          continue;  // more may follow; the pipe closes when the child ends
       }
       const double elapsed = std::chrono::duration<double>(Clock::now() - child.started).count();
       if (options.timeout_seconds > 0 && elapsed > options.timeout_seconds && !child.timed_out) {
@@ -218,10 +234,12 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       }
       int status = 0;
       const pid_t ended = ::waitpid(child.pid, &status, WNOHANG);
-      if (ended != child.pid) continue;
+      if (ended != child.pid)
+        continue;
       // Drain what is left in the pipe.
       char buffer[65536];
-      for (ssize_t n; (n = ::read(child.pipe_fd, buffer, sizeof(buffer))) > 0;) child.output.append(buffer, n);
+      for (ssize_t n; (n = ::read(child.pipe_fd, buffer, sizeof(buffer))) > 0;)
+        child.output.append(buffer, n);
       ::close(child.pipe_fd);
       const Job& job = jobs[child.job_index];
       JobRecord record = finish_child(child, job, status);
@@ -237,7 +255,8 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
     }
   }
   ::close(fd);
-  for (const auto& job : jobs) result.records.push_back(done.at(job.id()));
+  for (const auto& job : jobs)
+    result.records.push_back(done.at(job.id()));
   result.failures = failures;
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;

@@ -15,13 +15,15 @@
 namespace holebench::harness {
 
 const MetricTolerance* Tolerances::find(const std::string& metric) const {
-  if (std::find(ignored.begin(), ignored.end(), metric) != ignored.end()) return nullptr;
+  if (std::find(ignored.begin(), ignored.end(), metric) != ignored.end())
+    return nullptr;
   const auto it = metrics.find(metric);
   return it == metrics.end() ? &default_tolerance : &it->second;
 }
 
 std::filesystem::path default_suites_dir() {
-  if (const char* dir = std::getenv("HOLEBENCH_SUITES_DIR"); dir && *dir) return dir;
+  if (const char* dir = std::getenv("HOLEBENCH_SUITES_DIR"); dir && *dir)
+    return dir;
   return HOLEBENCH_SUITES_DIR;
 }
 
@@ -44,13 +46,15 @@ MetricTolerance tolerance_from(const nlohmann::json& j, MetricTolerance base) {
 
 Suite load_suite(const std::string& name_or_path, const std::filesystem::path& suites_dir) {
   std::filesystem::path path = name_or_path;
-  if (path.extension() != ".json") path = suites_dir / (name_or_path + ".json");
+  if (path.extension() != ".json")
+    path = suites_dir / (name_or_path + ".json");
   std::ifstream in(path);
   if (!in) {
     std::string known;
-    for (const auto& name : list_suites(suites_dir)) known += (known.empty() ? "" : ", ") + name;
-    throw InvalidInputError("no suite '" + name_or_path + "' (" + path.string() + " cannot be read); known suites: " +
-                            (known.empty() ? "none" : known));
+    for (const auto& name : list_suites(suites_dir))
+      known += (known.empty() ? "" : ", ") + name;
+    throw InvalidInputError("no suite '" + name_or_path + "' (" + path.string() +
+                            " cannot be read); known suites: " + (known.empty() ? "none" : known));
   }
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
@@ -67,23 +71,30 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& s
     if (j.contains("evaluation")) {
       const auto& e = j["evaluation"];
       auto& o = suite.evaluation;
-      o.hausdorff_error_bound_rel_diag = e.value("hausdorff_error_bound_rel_diag", o.hausdorff_error_bound_rel_diag);
-      o.mean_error_bound_rel_diag = e.value("mean_error_bound_rel_diag", o.mean_error_bound_rel_diag);
-      o.hole_mean_error_bound_rel_diag = e.value("hole_mean_error_bound_rel_diag", o.hole_mean_error_bound_rel_diag);
+      o.hausdorff_error_bound_rel_diag =
+          e.value("hausdorff_error_bound_rel_diag", o.hausdorff_error_bound_rel_diag);
+      o.mean_error_bound_rel_diag =
+          e.value("mean_error_bound_rel_diag", o.mean_error_bound_rel_diag);
+      o.hole_mean_error_bound_rel_diag =
+          e.value("hole_mean_error_bound_rel_diag", o.hole_mean_error_bound_rel_diag);
       o.self_intersections = e.value("self_intersections", o.self_intersections);
-      o.arrow_field_of_view_degrees = e.value("arrow_field_of_view_degrees", o.arrow_field_of_view_degrees);
+      o.arrow_field_of_view_degrees =
+          e.value("arrow_field_of_view_degrees", o.arrow_field_of_view_degrees);
     }
     if (j.contains("tolerances")) {
       const auto& t = j["tolerances"];
-      if (t.contains("default")) suite.tolerances.default_tolerance = tolerance_from(t["default"], {});
+      if (t.contains("default"))
+        suite.tolerances.default_tolerance = tolerance_from(t["default"], {});
       if (t.contains("metrics")) {
         for (const auto& [name, value] : t["metrics"].items()) {
-          suite.tolerances.metrics[name] = tolerance_from(value, suite.tolerances.default_tolerance);
+          suite.tolerances.metrics[name] =
+              tolerance_from(value, suite.tolerances.default_tolerance);
         }
       }
       suite.tolerances.ignored = t.value("ignored", suite.tolerances.ignored);
     }
-    if (suite.case_patterns.empty()) throw std::invalid_argument("\"cases\" is empty");
+    if (suite.case_patterns.empty())
+      throw std::invalid_argument("\"cases\" is empty");
     return suite;
   } catch (const std::exception& e) {
     throw InvalidInputError(path.string() + ": " + e.what());
@@ -94,7 +105,8 @@ std::vector<std::string> list_suites(const std::filesystem::path& suites_dir) {
   std::vector<std::string> names;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(suites_dir, error)) {
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    if (entry.path().extension() == ".json")
+      names.push_back(entry.path().stem().string());
   }
   std::sort(names.begin(), names.end());
   return names;

@@ -49,9 +49,11 @@ std::filesystem::path default_suites_dir();
 
 /// Reads suite `name_or_path`: a path to a .json file, or a name looked up as
 /// <suites_dir>/<name>.json. Throws InvalidInputError with the file and the field on error.
-Suite load_suite(const std::string& name_or_path, const std::filesystem::path& suites_dir = default_suites_dir());
+Suite load_suite(const std::string& name_or_path,
+                 const std::filesystem::path& suites_dir = default_suites_dir());
 
 /// The names of the suites in `suites_dir`, sorted.
-std::vector<std::string> list_suites(const std::filesystem::path& suites_dir = default_suites_dir());
+std::vector<std::string> list_suites(
+    const std::filesystem::path& suites_dir = default_suites_dir());
 
 }  // namespace holebench::harness

@@ -20,7 +20,8 @@
 namespace holebench::generators {
 
 std::filesystem::path default_cad_data_dir() {
-  if (const char* dir = std::getenv("HOLEBENCH_CAD_DIR"); dir && *dir) return dir;
+  if (const char* dir = std::getenv("HOLEBENCH_CAD_DIR"); dir && *dir)
+    return dir;
   return HOLEBENCH_DEFAULT_CAD_DIR;
 }
 
@@ -42,17 +43,20 @@ std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem:
   std::vector<CadModelSource> sources;
   auto is_mesh = [](const std::filesystem::path& p) {
     std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply";
   };
   for (const auto& path : paths) {
     if (std::filesystem::is_directory(path)) {
       std::vector<std::filesystem::path> files;
       for (const auto& entry : std::filesystem::directory_iterator(path)) {
-        if (entry.is_regular_file() && is_mesh(entry.path())) files.push_back(entry.path());
+        if (entry.is_regular_file() && is_mesh(entry.path()))
+          files.push_back(entry.path());
       }
       std::sort(files.begin(), files.end());
-      for (const auto& file : files) sources.push_back({file.stem().string(), file, "user file"});
+      for (const auto& file : files)
+        sources.push_back({file.stem().string(), file, "user file"});
     } else {
       sources.push_back({path.stem().string(), path, "user file"});
     }
@@ -64,18 +68,21 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
                                                        const PrepareOptions& options) {
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
-  const std::string key = fmt::format("{}|{}|{}", source.path.string(),
-                                      options.target_edge_length_rel_diag, options.sharp_angle_degrees);
+  const std::string key =
+      fmt::format("{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
+                  options.sharp_angle_degrees);
   {
     std::lock_guard<std::mutex> lock(mutex);
-    if (auto it = cache.find(key); it != cache.end()) return it->second;
+    if (auto it = cache.find(key); it != cache.end())
+      return it->second;
   }
   Mesh mesh = read_mesh(source.path);
   const auto loops = find_boundary_loops(mesh);
   if (!loops.empty()) {
-    throw InvalidInputError(fmt::format("{}: the mesh is open ({} boundary loops); holes are "
-                                        "punched into closed models only",
-                                        source.path.string(), loops.size()));
+    throw InvalidInputError(
+        fmt::format("{}: the mesh is open ({} boundary loops); holes are "
+                    "punched into closed models only",
+                    source.path.string(), loops.size()));
   }
   RemeshOptions remesh;
   remesh.target_edge_length = options.target_edge_length_rel_diag * bounding_box_diagonal(mesh);

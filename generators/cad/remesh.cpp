@@ -24,7 +24,8 @@ Mesh remesh_isotropic(const Mesh& input, const RemeshOptions& options) {
   using Edge = boost::graph_traits<Mesh>::edge_descriptor;
   std::map<Edge, bool> sharp_edges;
   boost::associative_property_map<std::map<Edge, bool>> sharp(sharp_edges);
-  for (auto e : edges(mesh)) put(sharp, e, false);
+  for (auto e : edges(mesh))
+    put(sharp, e, false);
   PMP::detect_sharp_edges(mesh, options.sharp_angle_degrees, sharp);
   PMP::isotropic_remeshing(faces(mesh), options.target_edge_length, mesh,
                            CGAL::parameters::number_of_iterations(options.iterations)

@@ -12,7 +12,7 @@
 namespace holebench::generators {
 
 struct RemeshOptions {
-  double target_edge_length = 0.0;  ///< model units
+  double target_edge_length = 0.0;    ///< model units
   double sharp_angle_degrees = 30.0;  ///< edges with a larger dihedral angle are kept
   unsigned iterations = 3;
 };

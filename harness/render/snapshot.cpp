@@ -84,7 +84,8 @@ struct View {
   bool project(const Point& p, double& x, double& y, double& depth) const {
     const Point d = p - eye;
     const double z = OpenMesh::dot(d, forward);
-    if (z <= 1e-12) return false;
+    if (z <= 1e-12)
+      return false;
     x = (OpenMesh::dot(d, right) / z / half_width + 1.0) * 0.5 * width;
     y = (1.0 - OpenMesh::dot(d, up) / z / half_height) * 0.5 * height;
     depth = d.norm();
@@ -92,37 +93,43 @@ struct View {
   }
 };
 
-void paint_disc(Image& image, const std::vector<double>& depth, double tolerance, double x, double y,
-                double point_depth, float radius, const Rgb& colour) {
+void paint_disc(Image& image, const std::vector<double>& depth, double tolerance, double x,
+                double y, double point_depth, float radius, const Rgb& colour) {
   const int r = static_cast<int>(std::ceil(radius));
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {
       const int px = static_cast<int>(std::floor(x)) + dx;
       const int py = static_cast<int>(std::floor(y)) + dy;
-      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-      if (dx * dx + dy * dy > radius * radius) continue;
-      if (point_depth > depth[static_cast<std::size_t>(py) * image.width + px] + tolerance) continue;
+      if (px < 0 || py < 0 || px >= image.width || py >= image.height)
+        continue;
+      if (dx * dx + dy * dy > radius * radius)
+        continue;
+      if (point_depth > depth[static_cast<std::size_t>(py) * image.width + px] + tolerance)
+        continue;
       image.set(px, py, colour);
     }
   }
 }
 
-void draw_overlay(Image& image, const View& view, const std::vector<double>& depth, double tolerance,
-                  const Overlay& overlay) {
+void draw_overlay(Image& image, const View& view, const std::vector<double>& depth,
+                  double tolerance, const Overlay& overlay) {
   for (const auto& line : overlay.lines) {
     double xa, ya, da, xb, yb, db;
-    if (!view.project(line.a, xa, ya, da) || !view.project(line.b, xb, yb, db)) continue;
+    if (!view.project(line.a, xa, ya, da) || !view.project(line.b, xb, yb, db))
+      continue;
     const int steps = std::max(1, static_cast<int>(std::ceil(std::hypot(xb - xa, yb - ya))));
     for (int i = 0; i <= steps; ++i) {
       const double t = static_cast<double>(i) / steps;
       double x, y, d;
-      if (!view.project(line.a + (line.b - line.a) * t, x, y, d)) continue;
+      if (!view.project(line.a + (line.b - line.a) * t, x, y, d))
+        continue;
       paint_disc(image, depth, tolerance, x, y, d, 0.5f * line.width_px, line.colour);
     }
   }
   for (const auto& dot : overlay.dots) {
     double x, y, d;
-    if (view.project(dot.p, x, y, d)) paint_disc(image, depth, tolerance, x, y, d, dot.radius_px, dot.colour);
+    if (view.project(dot.p, x, y, d))
+      paint_disc(image, depth, tolerance, x, y, d, dot.radius_px, dot.colour);
   }
 }
 
@@ -156,7 +163,8 @@ Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOpti
             const double facing = -OpenMesh::dot(hit.normal, direction / direction.norm());
             const float light = static_cast<float>(0.25 + 0.75 * std::abs(facing));
             Rgb base = is_new(mesh, f) ? patch_colour() : region_colour(region(mesh, f));
-            if (facing < 0.0) base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
+            if (facing < 0.0)
+              base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
             colour = {base.r * light, base.g * light, base.b * light};
           }
           sum.r += colour.r;

@@ -12,7 +12,8 @@ namespace {
 
 std::map<std::string, int> signature_counts(const FeatureAnalysis& analysis) {
   std::map<std::string, int> counts;
-  for (const auto& corner : analysis.corners) ++counts[corner.signature()];
+  for (const auto& corner : analysis.corners)
+    ++counts[corner.signature()];
   return counts;
 }
 
@@ -38,7 +39,8 @@ TEST(Features, NotchedBlockHasTheCornerSignaturesOfItsConstruction) {
   EXPECT_EQ(signature_counts(analysis),
             (std::map<std::string, int>{{"ccc", 10}, {"ccr", 3}, {"rrr", 1}}));
   int reflex = 0;
-  for (const auto& chain : analysis.chains) reflex += chain.convexity == Convexity::Reflex ? 1 : 0;
+  for (const auto& chain : analysis.chains)
+    reflex += chain.convexity == Convexity::Reflex ? 1 : 0;
   EXPECT_EQ(reflex, 3);  // the notch's three inner edges
 }
 

@@ -67,7 +67,8 @@ TEST(BoxHoles, CaseIdAndSeedDetermineTheInputBitForBit) {
 TEST(CaseCatalog, UnknownIdIsAnError) {
   EXPECT_THROW(make_case("no/such/case"), std::invalid_argument);
   std::size_t box_cases = 0;
-  for (const auto& c : list_cases()) box_cases += c.family == "box" ? 1 : 0;
+  for (const auto& c : list_cases())
+    box_cases += c.family == "box" ? 1 : 0;
   EXPECT_EQ(box_cases, 3u);
 }
 

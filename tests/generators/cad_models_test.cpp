@@ -18,7 +18,8 @@ bool cad_data_present() {
 // The CGAL data set's models load, are closed, and keep their shape through remeshing:
 // the remeshed surface stays within a small fraction of the diagonal of the original.
 TEST(CadModels, EveryModelPreparesIntoAClosedSegmentedMesh) {
-  if (!cad_data_present()) GTEST_SKIP() << "CGAL data set not extracted (run scripts/setup.sh)";
+  if (!cad_data_present())
+    GTEST_SKIP() << "CGAL data set not extracted (run scripts/setup.sh)";
   for (const auto& source : cgal_cad_models(default_cad_data_dir())) {
     SCOPED_TRACE(source.name);
     const auto model = prepare_cad_model(source);
@@ -27,7 +28,8 @@ TEST(CadModels, EveryModelPreparesIntoAClosedSegmentedMesh) {
     EXPECT_FALSE(model->features.chains.empty());
     // The remeshing target is 1 % of the diagonal.
     double length = 0.0;
-    for (auto e : model->mesh.edges()) length += model->mesh.calc_edge_length(e);
+    for (auto e : model->mesh.edges())
+      length += model->mesh.calc_edge_length(e);
     const double mean = length / model->mesh.n_edges() / model->diagonal;
     EXPECT_GT(mean, 0.004);
     EXPECT_LT(mean, 0.02);
@@ -36,12 +38,14 @@ TEST(CadModels, EveryModelPreparesIntoAClosedSegmentedMesh) {
 
 // Fandisk (Hoppe): its creases are sharp edges of both kinds.
 TEST(CadModels, FandiskHasConvexAndReflexCreasesAndEveryTargetMakesAValidCase) {
-  if (!cad_data_present()) GTEST_SKIP() << "CGAL data set not extracted (run scripts/setup.sh)";
+  if (!cad_data_present())
+    GTEST_SKIP() << "CGAL data set not extracted (run scripts/setup.sh)";
   CatalogOptions options;
   const CaseCatalog catalog(options);
   int cases = 0;
   for (const auto& d : catalog.cases()) {
-    if (d.id.rfind("cad/fandisk/", 0) != 0) continue;
+    if (d.id.rfind("cad/fandisk/", 0) != 0)
+      continue;
     SCOPED_TRACE(d.id);
     const Case c = catalog.make(d.id);
     EXPECT_FALSE(c.holes[0].removed_faces.empty());

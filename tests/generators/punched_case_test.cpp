@@ -24,7 +24,8 @@ CatalogOptions no_cad() {
 // "corner_ccr" -> {convex, convex, reflex}
 std::multiset<Convexity> signature_of(const std::string& kind) {
   std::multiset<Convexity> s;
-  for (char c : kind.substr(kind.find('_') + 1)) s.insert(c == 'c' ? Convexity::Convex : Convexity::Reflex);
+  for (char c : kind.substr(kind.find('_') + 1))
+    s.insert(c == 'c' ? Convexity::Convex : Convexity::Reflex);
   return s;
 }
 
@@ -33,7 +34,8 @@ TEST(PunchedCases, ProceduralSolidHolesMatchTheirTargets) {
   const CaseCatalog catalog(no_cad());
   int checked = 0;
   for (const auto& descriptor : catalog.cases()) {
-    if (descriptor.family != "solid") continue;
+    if (descriptor.family != "solid")
+      continue;
     SCOPED_TRACE(descriptor.id);
     const Case c = catalog.make(descriptor.id);
     ASSERT_EQ(c.holes.size(), 1u);
@@ -47,14 +49,17 @@ TEST(PunchedCases, ProceduralSolidHolesMatchTheirTargets) {
       continue;
     }
     EXPECT_EQ(loops.size(), 1u);
-    for (auto f : c.input.faces()) ASSERT_EQ(region(c.input, f), kNoRegion) << "inputs carry no regions";
-    const bool small = descriptor.id.size() > 6 && descriptor.id.substr(descriptor.id.size() - 6) == "/small";
+    for (auto f : c.input.faces())
+      ASSERT_EQ(region(c.input, f), kNoRegion) << "inputs carry no regions";
+    const bool small =
+        descriptor.id.size() > 6 && descriptor.id.substr(descriptor.id.size() - 6) == "/small";
     if (kind.rfind("corner_", 0) == 0) {
       ASSERT_EQ(hole.missing_corners.size(), 1u);
       EXPECT_EQ(hole.missing_edges.size(), 3u);
       ASSERT_TRUE(hole.labels.has_value());
       EXPECT_EQ(hole.labels->k, 3);
-      const std::multiset<Convexity> transitions(hole.labels->transitions.begin(), hole.labels->transitions.end());
+      const std::multiset<Convexity> transitions(hole.labels->transitions.begin(),
+                                                 hole.labels->transitions.end());
       EXPECT_EQ(transitions, signature_of(kind));
     } else if (kind.rfind("edge_", 0) == 0) {
       EXPECT_TRUE(hole.missing_corners.empty());
@@ -66,7 +71,8 @@ TEST(PunchedCases, ProceduralSolidHolesMatchTheirTargets) {
         ASSERT_TRUE(hole.labels.has_value());
         EXPECT_EQ(hole.labels->k, 2);
         const Convexity expected = kind == "edge_convex" ? Convexity::Convex : Convexity::Reflex;
-        for (Convexity t : hole.labels->transitions) EXPECT_EQ(t, expected);
+        for (Convexity t : hole.labels->transitions)
+          EXPECT_EQ(t, expected);
       }
     } else if (kind == "face_interior") {
       EXPECT_TRUE(hole.missing_corners.empty());
@@ -76,7 +82,8 @@ TEST(PunchedCases, ProceduralSolidHolesMatchTheirTargets) {
     }
     if (hole.labels && hole.labels->k <= 3) {
       // Small holes are below the structure size (closed automatically), large ones above.
-      EXPECT_EQ(hole.labels->expected_decision, small ? Decision::CloseAutomatically : Decision::Guide);
+      EXPECT_EQ(hole.labels->expected_decision,
+                small ? Decision::CloseAutomatically : Decision::Guide);
       EXPECT_EQ(hole.labels->orientation, Orientation::Inner);
     }
     ++checked;
@@ -90,7 +97,8 @@ TEST(PunchedCases, SameIdGivesTheSameCase) {
   const Case b = catalog.make("solid/notched_block/corner_rrr/large");
   EXPECT_EQ(a.holes[0].removed_faces, b.holes[0].removed_faces);
   ASSERT_EQ(a.input.n_vertices(), b.input.n_vertices());
-  for (auto v : a.input.vertices()) EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
+  for (auto v : a.input.vertices())
+    EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
 }
 
 std::filesystem::path temp_folder(const std::string& name) {
@@ -110,18 +118,21 @@ TEST(CaseCatalog, UserMeshesAreUsedAndBadOnesSkippedWithTheirReason) {
     // Two triangles sharing an edge: an open surface.
     std::ofstream(dir / "open.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n";
     // Three triangles on one edge: non-manifold.
-    std::ofstream(dir / "fin.off") << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
+    std::ofstream(dir / "fin.off")
+        << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
   }
   CatalogOptions options = no_cad();
   options.user_meshes = {dir};
   const CaseCatalog catalog(options);
   std::set<std::string> files;
   for (const auto& c : catalog.cases()) {
-    if (c.family == "file") files.insert(c.id.substr(0, c.id.find('/', 5)));
+    if (c.family == "file")
+      files.insert(c.id.substr(0, c.id.find('/', 5)));
   }
   EXPECT_EQ(files, (std::set<std::string>{"file/good_box"}));
   std::map<std::string, std::string> reasons;
-  for (const auto& s : catalog.skipped()) reasons[s.name] = s.reason;
+  for (const auto& s : catalog.skipped())
+    reasons[s.name] = s.reason;
   ASSERT_EQ(reasons.size(), 3u);
   EXPECT_NE(reasons["file/open"].find("open"), std::string::npos);
   EXPECT_NE(reasons["file/fin"].find("non-manifold edge"), std::string::npos);
@@ -136,7 +147,8 @@ TEST(CaseCatalog, MissingCadDataIsReportedNotFatal) {
   const CaseCatalog catalog(options);
   EXPECT_FALSE(catalog.cases().empty());
   std::size_t cad_skipped = 0;
-  for (const auto& s : catalog.skipped()) cad_skipped += s.name.rfind("cad/", 0) == 0 ? 1 : 0;
+  for (const auto& s : catalog.skipped())
+    cad_skipped += s.name.rfind("cad/", 0) == 0 ? 1 : 0;
   EXPECT_EQ(cad_skipped, 8u);
   EXPECT_THROW(catalog.make("cad/fandisk/edge_convex/small"), std::exception);
 }

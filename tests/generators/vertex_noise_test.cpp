@@ -47,7 +47,8 @@ TEST(VertexNoise, ZeroPercentChangesNothing) {
   const Mesh clean = make_box({Point(1.0, 1.0, 1.0), 0.25});
   Mesh same = clean;
   add_vertex_noise(same, {0.0, 1.0, 5});
-  for (auto v : clean.vertices()) EXPECT_EQ(same.point(v), clean.point(v));
+  for (auto v : clean.vertices())
+    EXPECT_EQ(same.point(v), clean.point(v));
 }
 
 // Determinism: same id, seed and level give the same input bit for bit; another seed

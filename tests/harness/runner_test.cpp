@@ -19,15 +19,19 @@ std::filesystem::path fresh_file(const std::string& name) {
 
 std::vector<Job> jobs_named(const std::vector<std::string>& cases) {
   std::vector<Job> jobs;
-  for (const auto& c : cases) jobs.push_back({c, "fake", 0.0, 0, "no_user"});
+  for (const auto& c : cases)
+    jobs.push_back({c, "fake", 0.0, 0, "no_user"});
   return jobs;
 }
 
 // A stand-in job: its behaviour is chosen by the case id, its record depends on the id only.
 JobRecord fake_job(const Job& job) {
-  if (job.case_id == "crash") std::raise(SIGSEGV);
-  if (job.case_id == "hang") std::this_thread::sleep_for(std::chrono::hours(1));
-  if (job.case_id == "throw") throw std::runtime_error("escaped");
+  if (job.case_id == "crash")
+    std::raise(SIGSEGV);
+  if (job.case_id == "hang")
+    std::this_thread::sleep_for(std::chrono::hours(1));
+  if (job.case_id == "throw")
+    throw std::runtime_error("escaped");
   JobRecord record;
   record.job = job;
   record.metrics = {{"length_count", static_cast<double>(job.case_id.size())}};
@@ -40,11 +44,13 @@ TEST(Runner, CrashesHangsAndEscapesBecomeStatusesAndTheRunGoesOn) {
   options.timeout_seconds = 1.0;
   options.progress = false;
   const auto path = fresh_file("statuses.jsonl");
-  const auto result = run_isolated(jobs_named({"a", "crash", "hang", "throw", "bb"}), fake_job, path, options);
+  const auto result =
+      run_isolated(jobs_named({"a", "crash", "hang", "throw", "bb"}), fake_job, path, options);
   ASSERT_EQ(result.records.size(), 5u);
   EXPECT_EQ(result.records[0].status, JobStatus::Ok);
   EXPECT_EQ(result.records[1].status, JobStatus::Crash);
-  EXPECT_NE(result.records[1].message.find("Segmentation"), std::string::npos) << result.records[1].message;
+  EXPECT_NE(result.records[1].message.find("Segmentation"), std::string::npos)
+      << result.records[1].message;
   EXPECT_EQ(result.records[2].status, JobStatus::Timeout);
   EXPECT_EQ(result.records[3].status, JobStatus::Error);  // the child catches what escapes the job
   EXPECT_NE(result.records[3].message.find("escaped"), std::string::npos);
@@ -87,7 +93,8 @@ TEST(Runner, ResumeRunsOnlyWhatIsMissing) {
   const auto result = run_isolated(jobs, fake_job, path, options);
   EXPECT_EQ(result.resumed, 2u);
   ASSERT_EQ(result.records.size(), 4u);
-  for (const auto& r : result.records) EXPECT_EQ(r.status, JobStatus::Ok);
+  for (const auto& r : result.records)
+    EXPECT_EQ(r.status, JobStatus::Ok);
   // The two resumed records are the earlier run's: four lines in the file now (plus the cut one).
   EXPECT_EQ(read_records_jsonl(path).size(), 4u);
 }
