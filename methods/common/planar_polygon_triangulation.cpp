@@ -64,6 +64,65 @@ void mark_nesting(Cdt& cdt) {
 
 }  // namespace
 
+PolygonTriangulation2d triangulate_polygon_2d(
+    const std::vector<std::vector<std::array<double, 2>>>& loops,
+    const std::vector<std::array<double, 2>>& interior) {
+  PolygonTriangulation2d result;
+  auto fail = [&](TriangulationFailure failure) {
+    result.failure = failure;
+    result.triangles.clear();
+    result.kept_interior.clear();
+    return result;
+  };
+  try {
+    Cdt cdt;
+    // Input points are numbered in a map (a vertex's info is not initialised by CGAL).
+    std::map<Cdt::Vertex_handle, int> number;
+    int index = 0;
+    for (const auto& loop : loops) {
+      if (loop.size() < 3)
+        return fail(TriangulationFailure::ShortLoop);
+      std::vector<Cdt::Vertex_handle> handles;
+      for (const auto& p : loop) {
+        auto h = cdt.insert(Kernel::Point_2(p[0], p[1]));
+        if (!number.emplace(h, index).second)
+          return fail(TriangulationFailure::SharedPoint);
+        handles.push_back(h);
+        ++index;
+      }
+      for (std::size_t i = 0; i < handles.size(); ++i) {
+        cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
+      }
+    }
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+      auto h = cdt.insert(Kernel::Point_2(interior[i][0], interior[i][1]));
+      if (!number.emplace(h, index).second)
+        continue;
+      result.kept_interior.push_back(static_cast<int>(i));
+      ++index;
+    }
+    mark_nesting(cdt);
+    for (auto f : cdt.finite_face_handles()) {
+      if (f->info().nesting % 2 != 1)
+        continue;
+      std::array<int, 3> tri{};
+      for (int i = 0; i < 3; ++i) {
+        const auto it = number.find(f->vertex(i));
+        if (it == number.end())
+          return fail(TriangulationFailure::ForeignPoint);
+        tri[i] = it->second;
+      }
+      result.triangles.push_back(tri);  // CGAL faces are counter-clockwise
+    }
+  } catch (const std::exception& e) {
+    result.detail = e.what();
+    return fail(TriangulationFailure::SelfIntersection);
+  }
+  if (result.triangles.empty())
+    return fail(TriangulationFailure::NoTriangle);
+  return result;
+}
+
 PolygonTriangulation triangulate_planar_polygon(const std::vector<Point>& outer, const Plane& plane,
                                                 const std::vector<std::vector<Point>>& inner) {
   PolygonTriangulation result;
@@ -74,59 +133,41 @@ PolygonTriangulation triangulate_planar_polygon(const std::vector<Point>& outer,
   u /= u.norm();
   const Point v = OpenMesh::cross(n, u);
 
-  std::vector<std::vector<Point>> loops{outer};
-  loops.insert(loops.end(), inner.begin(), inner.end());
-  try {
-    Cdt cdt;
-    // Input points are numbered in a map (a vertex's info is not initialised by CGAL).
-    std::map<Cdt::Vertex_handle, int> number;
-    int index = 0;
-    for (const auto& loop : loops) {
-      if (loop.size() < 3) {
-        result.error = "a loop with fewer than three points";
-        return result;
-      }
-      std::vector<Cdt::Vertex_handle> handles;
-      for (const Point& p : loop) {
-        const Point d = p - plane.point;
-        auto h = cdt.insert(Kernel::Point_2(OpenMesh::dot(d, u), OpenMesh::dot(d, v)));
-        if (!number.emplace(h, index).second) {
-          // Two input points project onto one: the projection is not a simple polygon.
-          result.error = "two points of the polygon project onto the same point";
-          return result;
-        }
-        handles.push_back(h);
-        ++index;
-      }
-      for (std::size_t i = 0; i < handles.size(); ++i) {
-        cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
-      }
+  std::vector<std::vector<std::array<double, 2>>> loops;
+  auto project = [&](const std::vector<Point>& loop) {
+    std::vector<std::array<double, 2>> projected;
+    for (const Point& p : loop) {
+      const Point d = p - plane.point;
+      projected.push_back({OpenMesh::dot(d, u), OpenMesh::dot(d, v)});
     }
-    mark_nesting(cdt);
-    for (auto f : cdt.finite_face_handles()) {
-      if (f->info().nesting % 2 != 1)
-        continue;
-      std::array<int, 3> tri{};
-      for (int i = 0; i < 3; ++i) {
-        const auto it = number.find(f->vertex(i));
-        if (it == number.end()) {
-          result.error = "the triangulation needed a point that is not on the polygon";
-          return result;
-        }
-        tri[i] = it->second;
-      }
-      result.triangles.push_back(tri);  // CGAL faces are counter-clockwise in (u, v)
-    }
-  } catch (const std::exception& e) {
-    result.error = std::string("the projected polygon intersects itself (") + e.what() + ")";
-    result.triangles.clear();
-    return result;
+    loops.push_back(std::move(projected));
+  };
+  project(outer);
+  for (const auto& loop : inner)
+    project(loop);
+  const PolygonTriangulation2d planar = triangulate_polygon_2d(loops);
+  switch (planar.failure) {
+    case TriangulationFailure::None:
+      result.triangles = planar.triangles;  // counter-clockwise in (u, v): about the normal
+      result.ok = true;
+      break;
+    case TriangulationFailure::ShortLoop:
+      result.error = "a loop with fewer than three points";
+      break;
+    case TriangulationFailure::SharedPoint:
+      // Two input points project onto one: the projection is not a simple polygon.
+      result.error = "two points of the polygon project onto the same point";
+      break;
+    case TriangulationFailure::SelfIntersection:
+      result.error = "the projected polygon intersects itself (" + planar.detail + ")";
+      break;
+    case TriangulationFailure::ForeignPoint:
+      result.error = "the triangulation needed a point that is not on the polygon";
+      break;
+    case TriangulationFailure::NoTriangle:
+      result.error = "no triangle inside the polygon";
+      break;
   }
-  if (result.triangles.empty()) {
-    result.error = "no triangle inside the polygon";
-    return result;
-  }
-  result.ok = true;
   return result;
 }
 

@@ -1,67 +1,18 @@
-// The slice_loft translation unit that includes CGAL (2D constrained Delaunay).
+// Trimming (4.5) and faceting and sewing (4.6); the triangulation is the methods' shared
+// constrained Delaunay (methods/common/planar_polygon_triangulation.h).
 #include "methods/slice_loft/trimming_and_sewing.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "methods/common/planar_polygon_triangulation.h"
 
 #include <cmath>
-#include <list>
 #include <unordered_map>
 
 namespace holebench::slice_loft {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-struct FaceInfo {
-  int nesting = -1;
-};
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-using FaceBase = CGAL::Constrained_triangulation_face_base_2<
-    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
-using Cdt =
-    CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::No_constraint_intersection_tag>;
-
 struct Vec2 {
   double x = 0.0, y = 0.0;
 };
-
-// Faces by nesting level across constraints (CGAL's polygon_triangulation example).
-void mark_nesting(Cdt& cdt) {
-  std::list<Cdt::Edge> border;
-  auto flood = [&](Cdt::Face_handle start, int level) {
-    if (start->info().nesting != -1)
-      return;
-    std::list<Cdt::Face_handle> queue{start};
-    while (!queue.empty()) {
-      auto f = queue.front();
-      queue.pop_front();
-      if (f->info().nesting != -1)
-        continue;
-      f->info().nesting = level;
-      for (int i = 0; i < 3; ++i) {
-        const Cdt::Edge e(f, i);
-        auto n = f->neighbor(i);
-        if (n->info().nesting != -1)
-          continue;
-        if (cdt.is_constrained(e))
-          border.push_back(e);
-        else
-          queue.push_back(n);
-      }
-    }
-  };
-  flood(cdt.infinite_face(), 0);
-  while (!border.empty()) {
-    const Cdt::Edge e = border.front();
-    border.pop_front();
-    auto n = e.first->neighbor(e.second);
-    if (n->info().nesting == -1)
-      flood(n, e.first->info().nesting + 1);
-  }
-}
 
 bool inside(const std::vector<Vec2>& polygon, Vec2 p) {
   bool in = false;
@@ -160,60 +111,43 @@ PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedP
   }
 
   // Faceting: constrained Delaunay triangulation with the boundary edges as constraints.
-  try {
-    Cdt cdt;
-    int index = 0;
-    for (const auto& loop : loops) {
-      if (loop.size() < 3) {
-        result.error = "a boundary with fewer than three points";
-        return result;
-      }
-      std::vector<Cdt::Vertex_handle> handles;
-      for (const Vec2& p : loop) {
-        // Vertex infos are not initialised by CGAL: a vertex is new iff the count grew.
-        const std::size_t before = cdt.number_of_vertices();
-        auto h = cdt.insert(Kernel::Point_2(p.x, p.y));
-        if (cdt.number_of_vertices() == before) {
-          result.error = "two boundary points share a parameter point";
-          return result;
-        }
-        h->info() = ++index;
-        handles.push_back(h);
-      }
-      for (std::size_t i = 0; i < handles.size(); ++i)
-        cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
-    }
-    std::vector<Point> kept;  // interior points the triangulation did not merge
-    for (std::size_t i = 0; i < interior_2d.size(); ++i) {
-      const std::size_t before = cdt.number_of_vertices();
-      auto h = cdt.insert(Kernel::Point_2(interior_2d[i].x, interior_2d[i].y));
-      if (cdt.number_of_vertices() == before)
-        continue;
-      h->info() = ++index;
-      kept.push_back(result.interior[i]);
-    }
-    result.interior = std::move(kept);
-    mark_nesting(cdt);
-    const bool flip = signed_area(loops[0]) < 0.0;
-    for (auto f : cdt.finite_face_handles()) {
-      if (f->info().nesting % 2 != 1)
-        continue;
-      std::array<int, 3> tri{};
-      for (int i = 0; i < 3; ++i) {
-        tri[i] = f->vertex(i)->info() - 1;
-      }
-      if (flip)
-        std::swap(tri[1], tri[2]);
-      result.triangles.push_back(tri);
-    }
-  } catch (const std::exception& e) {
-    result.error =
-        std::string("the boundary intersects itself in the parameter domain (") + e.what() + ")";
-    return result;
+  std::vector<std::vector<std::array<double, 2>>> loops_2d;
+  for (const auto& loop : loops) {
+    loops_2d.emplace_back();
+    for (const Vec2& p : loop)
+      loops_2d.back().push_back({p.x, p.y});
   }
-  if (result.triangles.empty()) {
-    result.error = "no facet inside the trimmed patch";
-    return result;
+  std::vector<std::array<double, 2>> interior_points;
+  for (const Vec2& p : interior_2d)
+    interior_points.push_back({p.x, p.y});
+  const PolygonTriangulation2d facets = triangulate_polygon_2d(loops_2d, interior_points);
+  switch (facets.failure) {
+    case TriangulationFailure::None:
+      break;
+    case TriangulationFailure::ShortLoop:
+      result.error = "a boundary with fewer than three points";
+      return result;
+    case TriangulationFailure::SharedPoint:
+      result.error = "two boundary points share a parameter point";
+      return result;
+    case TriangulationFailure::SelfIntersection:
+      result.error =
+          "the boundary intersects itself in the parameter domain (" + facets.detail + ")";
+      return result;
+    case TriangulationFailure::ForeignPoint:
+    case TriangulationFailure::NoTriangle:
+      result.error = "no facet inside the trimmed patch";
+      return result;
+  }
+  std::vector<Point> kept;  // interior points the triangulation did not merge
+  for (int i : facets.kept_interior)
+    kept.push_back(result.interior[i]);
+  result.interior = std::move(kept);
+  const bool flip = signed_area(loops[0]) < 0.0;
+  for (auto tri : facets.triangles) {
+    if (flip)
+      std::swap(tri[1], tri[2]);
+    result.triangles.push_back(tri);
   }
   result.ok = true;
   return result;
