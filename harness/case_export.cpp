@@ -23,14 +23,6 @@ std::string case_folder_name(const std::string& id) {
   return name;
 }
 
-namespace {
-
-nlohmann::ordered_json point_json(const Point& p) {
-  return {p[0], p[1], p[2]};
-}
-
-}  // namespace
-
 void export_case(const Case& c, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   WriteOptions ply;
@@ -56,12 +48,12 @@ void export_case(const Case& c, const std::filesystem::path& dir) {
     for (const auto& polyline : hole.missing_edges) {
       nlohmann::ordered_json line = nlohmann::ordered_json::array();
       for (const Point& p : polyline)
-        line.push_back(point_json(p));
+        line.push_back(point_to_json(p));
       edges.push_back(line);
     }
     auto& corners = h["missing_corners"] = nlohmann::ordered_json::array();
     for (const Point& p : hole.missing_corners)
-      corners.push_back(point_json(p));
+      corners.push_back(point_to_json(p));
     h["labels"] = hole.labels ? labels_to_json(*hole.labels) : nlohmann::ordered_json();
     holes.push_back(h);
   }

@@ -5,10 +5,6 @@
 namespace holebench::harness {
 namespace {
 
-nlohmann::ordered_json point_json(const Point& p) {
-  return {p[0], p[1], p[2]};
-}
-
 Point point_from(const nlohmann::json& j) {
   if (!j.is_array() || j.size() != 3)
     return Point(0, 0, 0);
@@ -24,6 +20,10 @@ T value_or(const nlohmann::json& j, const char* key, T fallback) {
 }
 
 }  // namespace
+
+nlohmann::ordered_json point_to_json(const Point& p) {
+  return {p[0], p[1], p[2]};
+}
 
 JobStatus job_status_from_string(const std::string& name) {
   for (auto status :
@@ -135,13 +135,15 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
   j["method_seconds"] = record.method_seconds;
   nlohmann::ordered_json holes = nlohmann::ordered_json::array();
   for (const auto& hole : record.holes) {
-    nlohmann::ordered_json h = {
-        {"hole_index", hole.hole_index},         {"loop_size", hole.loop_size},
-        {"centroid", point_json(hole.centroid)}, {"closed", hole.closed},
-        {"new_faces", hole.new_faces},           {"note", hole.note}};
+    nlohmann::ordered_json h = {{"hole_index", hole.hole_index},
+                                {"loop_size", hole.loop_size},
+                                {"centroid", point_to_json(hole.centroid)},
+                                {"closed", hole.closed},
+                                {"new_faces", hole.new_faces},
+                                {"note", hole.note}};
     if (hole.arrow) {
-      h["arrow"] = {{"position", point_json(hole.arrow->position)},
-                    {"direction", point_json(hole.arrow->direction)}};
+      h["arrow"] = {{"position", point_to_json(hole.arrow->position)},
+                    {"direction", point_to_json(hole.arrow->direction)}};
     }
     if (hole.classification)
       h["classification"] = labels_to_json(*hole.classification);

@@ -17,6 +17,8 @@ nlohmann::ordered_json record_to_json(const JobRecord& record);
 /// Throws std::invalid_argument for a record without a job id or with an unknown status.
 JobRecord record_from_json(const nlohmann::json& j);
 
+nlohmann::ordered_json point_to_json(const Point& p);  ///< [x, y, z]
+
 nlohmann::ordered_json labels_to_json(const HoleLabels& labels);
 HoleLabels labels_from_json(const nlohmann::json& j);
 
