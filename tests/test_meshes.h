@@ -3,6 +3,8 @@
 
 #include "core/mesh_builder.h"
 
+#include <cmath>
+
 namespace holebench::test {
 
 /// A regular tetrahedron-like closed mesh, outward oriented.
@@ -47,6 +49,19 @@ inline TriangleSoup grid_without_cells(int n, const std::vector<std::pair<int, i
       soup.triangles.push_back(full.triangles[t]);
   }
   return soup;
+}
+
+/// Every vertex moved by up to `amplitude` along a fixed pseudo-random direction that
+/// depends on its index only (deterministic, no RNG library involved).
+inline Mesh displaced(const Mesh& mesh, double amplitude) {
+  Mesh out = mesh;
+  for (auto v : out.vertices()) {
+    const double phase = 0.7548776662 * v.idx();
+    out.point(v) +=
+        Point(std::sin(12.9898 * phase), std::sin(78.233 * phase), std::sin(37.719 * phase)) *
+        amplitude;
+  }
+  return out;
 }
 
 }  // namespace holebench::test

@@ -50,18 +50,6 @@ Mesh filled_without_refinement(const Mesh& holed) {
   return mesh;
 }
 
-// A deterministic displacement of every vertex (no RNG library involved).
-Mesh displaced(const Mesh& mesh, double amplitude) {
-  Mesh out = mesh;
-  for (auto v : out.vertices()) {
-    const double phase = 0.7548776662 * v.idx();
-    out.point(v) +=
-        Point(std::sin(12.9898 * phase), std::sin(78.233 * phase), std::sin(37.719 * phase)) *
-        amplitude;
-  }
-  return out;
-}
-
 // Zero up to the rounding of the closest-point arithmetic (a few ulp of the coordinates).
 TEST(HausdorffDistance, IdenticalMeshesAreAtZero) {
   const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
@@ -105,7 +93,7 @@ TEST(HausdorffDistance, AgreesWithCgalOnACornerHole) {
 
 TEST(HausdorffDistance, AgreesWithCgalOnANoisyMesh) {
   const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
-  expect_agrees_with_cgal(displaced(box, 0.01), box, 1e-4);
+  expect_agrees_with_cgal(test::displaced(box, 0.01), box, 1e-4);
 }
 
 TEST(HausdorffDistance, AgreesWithCgalOnIdenticalMeshes) {

@@ -140,18 +140,6 @@ void expect_agrees_with_meshlab(const Mesh& a, const Mesh& b, const std::string&
   }
 }
 
-// A deterministic displacement of every vertex (no RNG library involved).
-Mesh displaced(const Mesh& mesh, double amplitude) {
-  Mesh out = mesh;
-  for (auto v : out.vertices()) {
-    const double phase = 0.7548776662 * v.idx();
-    out.point(v) +=
-        Point(std::sin(12.9898 * phase), std::sin(78.233 * phase), std::sin(37.719 * phase)) *
-        amplitude;
-  }
-  return out;
-}
-
 TEST(MeshlabHausdorff, ParallelGrids) {
   TriangleSoup lifted = test::grid_soup(3);
   for (auto& p : lifted.points)
@@ -168,7 +156,7 @@ TEST(MeshlabHausdorff, NoisyBox) {
   const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
   // Noisy to clean: the distance to the clean plane is convex on each noisy triangle, so
   // its maximum is at a vertex. Clean to noisy: it may lie inside a face.
-  expect_agrees_with_meshlab(displaced(box, 0.01), box, "noisy", {true, false});
+  expect_agrees_with_meshlab(test::displaced(box, 0.01), box, "noisy", {true, false});
 }
 
 }  // namespace
