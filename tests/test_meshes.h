@@ -11,7 +11,20 @@ namespace holebench::test {
 inline TriangleSoup tetrahedron_soup() {
   TriangleSoup soup;
   soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
-  soup.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  soup.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return soup;
+}
+
+/// A closed octahedron whose coordinates have no short decimal form, with region ids.
+inline TriangleSoup octahedron_with_regions() {
+  const Point c(1.0 / 3.0, 2.0 / 7.0, -std::sqrt(2.0) * 1e-5);
+  const double r = std::acos(-1.0) / 10.0;
+  TriangleSoup soup;
+  soup.points = {c + Point(r, 0, 0),  c + Point(-r, 0, 0), c + Point(0, r, 0),
+                 c + Point(0, -r, 0), c + Point(0, 0, r),  c + Point(0, 0, -r)};
+  soup.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  soup.regions = {0, 0, 1, 1, 2, 2, 3, 7};
   return soup;
 }
 

@@ -4,6 +4,8 @@
 #include "core/errors.h"
 #include "core/mesh.h"
 
+#include "tests/test_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,27 +16,6 @@
 
 namespace holebench {
 namespace {
-
-/// A closed, consistently oriented tetrahedron (normals point outwards).
-TriangleSoup tetrahedron() {
-  TriangleSoup soup;
-  soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
-  soup.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  return soup;
-}
-
-/// A closed octahedron with coordinates that have no short decimal form, and regions.
-TriangleSoup octahedron_with_regions() {
-  const Point c(1.0 / 3.0, 2.0 / 7.0, -std::sqrt(2.0) * 1e-5);
-  const double r = std::acos(-1.0) / 10.0;
-  TriangleSoup soup;
-  soup.points = {c + Point(r, 0, 0),  c + Point(-r, 0, 0), c + Point(0, r, 0),
-                 c + Point(0, -r, 0), c + Point(0, 0, r),  c + Point(0, 0, -r)};
-  soup.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  soup.regions = {0, 0, 1, 1, 2, 2, 3, 7};
-  return soup;
-}
 
 /// Runs `f`, which must throw InvalidInputError; returns its message.
 std::string error_of(const std::function<void()>& f) {
@@ -75,7 +56,7 @@ void expect_same_soup(const TriangleSoup& a, const TriangleSoup& b) {
 // Invariant: vertex i of the soup is vertex i of the mesh, triangle j is face j with the
 // same corners in the same order, and every element is marked Original.
 TEST(BuildMesh, KeepsVerticesFacesAndOrder) {
-  const TriangleSoup soup = tetrahedron();
+  const TriangleSoup soup = test::tetrahedron_soup();
   const Mesh mesh = build_mesh(soup);
   ASSERT_EQ(mesh.n_vertices(), 4u);
   ASSERT_EQ(mesh.n_faces(), 4u);
@@ -98,7 +79,7 @@ TEST(BuildMesh, KeepsVerticesFacesAndOrder) {
 
 // Invariant: face j gets region id regions[j].
 TEST(BuildMesh, CopiesRegions) {
-  const TriangleSoup soup = octahedron_with_regions();
+  const TriangleSoup soup = test::octahedron_with_regions();
   const Mesh mesh = build_mesh(soup);
   ASSERT_EQ(mesh.n_faces(), soup.triangles.size());
   for (auto f : mesh.faces())
@@ -110,7 +91,7 @@ TEST(BuildMesh, CopiesRegions) {
 TEST(BuildMesh, MarkOriginalFalseLeavesElementsNew) {
   BuildOptions options;
   options.mark_original = false;
-  const Mesh mesh = build_mesh(tetrahedron(), options);
+  const Mesh mesh = build_mesh(test::tetrahedron_soup(), options);
   for (auto v : mesh.vertices())
     EXPECT_TRUE(is_new(mesh, v));
   EXPECT_EQ(count_new_faces(mesh), mesh.n_faces());
@@ -128,7 +109,7 @@ TEST(BuildMesh, AcceptsOpenSurface) {
 
 // Invariant: to_soup is the inverse of build_mesh (points, triangles and regions equal).
 TEST(ToSoup, InvertsBuildMesh) {
-  for (const TriangleSoup& soup : {tetrahedron(), octahedron_with_regions()}) {
+  for (const TriangleSoup& soup : {test::tetrahedron_soup(), test::octahedron_with_regions()}) {
     expect_same_soup(to_soup(build_mesh(soup)), soup);
   }
 }
@@ -152,37 +133,37 @@ TEST(ToSoup, SkipsDeletedElements) {
 // Each failure class of build_mesh: the message names the source and the element.
 
 TEST(BuildMeshErrors, NoTriangles) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.triangles.clear();
   expect_build_error(soup, {"no triangles"});
 }
 
 TEST(BuildMeshErrors, NanCoordinate) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.points[2][1] = std::numeric_limits<double>::quiet_NaN();
   expect_build_error(soup, {"vertex 2", "non-finite"});
 }
 
 TEST(BuildMeshErrors, InfiniteCoordinate) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.points[3][0] = -std::numeric_limits<double>::infinity();
   expect_build_error(soup, {"vertex 3", "non-finite"});
 }
 
 TEST(BuildMeshErrors, IndexTooLarge) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.triangles[1][2] = 7;
   expect_build_error(soup, {"triangle 1", "references vertex 7", "4 vertices"});
 }
 
 TEST(BuildMeshErrors, NegativeIndex) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.triangles[3][0] = -1;
   expect_build_error(soup, {"triangle 3", "references vertex -1"});
 }
 
 TEST(BuildMeshErrors, RepeatedVertex) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.triangles[2] = {0, 3, 0};
   expect_build_error(soup, {"degenerate triangle 2", "repeats a vertex"});
 }
@@ -210,7 +191,7 @@ TEST(BuildMeshErrors, InconsistentOrientation) {
 
 TEST(BuildMeshErrors, NonManifoldVertex) {
   // A closed tetrahedron plus a triangle that touches it only at vertex 0.
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.points.push_back(Point(-1, 0, 0));
   soup.points.push_back(Point(-1, -1, 0));
   soup.triangles.push_back({0, 4, 5});
@@ -218,7 +199,7 @@ TEST(BuildMeshErrors, NonManifoldVertex) {
 }
 
 TEST(BuildMeshErrors, RegionListOfWrongLength) {
-  TriangleSoup soup = tetrahedron();
+  TriangleSoup soup = test::tetrahedron_soup();
   soup.regions = {0, 1};
   expect_build_error(soup, {"2 region ids for 4 triangles"});
 }

@@ -6,6 +6,8 @@
 #include "core/mesh_builder.h"
 
 #include <fmt/format.h>
+#include "tests/test_meshes.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -29,27 +31,6 @@ namespace {
 namespace fs = std::filesystem;
 
 // ------------------------------------------------------------------ shapes and helpers
-
-/// A closed, consistently oriented tetrahedron (normals point outwards).
-TriangleSoup tetrahedron() {
-  TriangleSoup soup;
-  soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
-  soup.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  return soup;
-}
-
-/// A closed octahedron whose coordinates have no short decimal form, with region ids.
-TriangleSoup octahedron_with_regions() {
-  const Point c(1.0 / 3.0, 2.0 / 7.0, -std::sqrt(2.0) * 1e-5);
-  const double r = std::acos(-1.0) / 10.0;
-  TriangleSoup soup;
-  soup.points = {c + Point(r, 0, 0),  c + Point(-r, 0, 0), c + Point(0, r, 0),
-                 c + Point(0, -r, 0), c + Point(0, 0, r),  c + Point(0, 0, -r)};
-  soup.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  soup.regions = {0, 0, 1, 1, 2, 2, 3, 7};
-  return soup;
-}
 
 /// Bytes of a binary file, with integers and floats in either byte order.
 class Bytes {
@@ -210,7 +191,7 @@ class RoundTripTest : public MeshIoTest, public ::testing::WithParamInterface<Ro
 // the triangles; PLY keeps the region ids.
 TEST_P(RoundTripTest, WriteThenReadGivesTheSameMesh) {
   const RoundTrip& param = GetParam();
-  for (const TriangleSoup& original : {tetrahedron(), octahedron_with_regions()}) {
+  for (const TriangleSoup& original : {test::tetrahedron_soup(), test::octahedron_with_regions()}) {
     const fs::path path = file(param.file);
     WriteOptions options;
     options.binary = param.binary;
@@ -271,7 +252,7 @@ TEST_F(MeshIoTest, PlyWithoutRegions) {
   const fs::path path = file("noregions.ply");
   WriteOptions options;
   options.write_regions = false;
-  write_mesh(build_mesh(octahedron_with_regions()), path, options);
+  write_mesh(build_mesh(test::octahedron_with_regions()), path, options);
   const TriangleSoup soup = read_soup(path);
   EXPECT_EQ(soup.triangles.size(), 8u);
   EXPECT_TRUE(soup.regions.empty());
@@ -281,7 +262,7 @@ TEST_F(MeshIoTest, PlyWithoutRegions) {
 // that look at the first bytes take it as binary) and has 84 + 50 * triangles bytes.
 TEST_F(MeshIoTest, BinaryStlLayout) {
   const fs::path path = file("layout.stl");
-  write_mesh(build_mesh(tetrahedron()), path);
+  write_mesh(build_mesh(test::tetrahedron_soup()), path);
   EXPECT_EQ(fs::file_size(path), 84u + 50u * 4u);
   std::ifstream in(path, std::ios::binary);
   std::string start(5, '\0');
@@ -291,7 +272,7 @@ TEST_F(MeshIoTest, BinaryStlLayout) {
 
 // Invariant: deleted faces are not written (the writer goes through to_soup).
 TEST_F(MeshIoTest, WriterSkipsDeletedFaces) {
-  Mesh mesh = build_mesh(octahedron_with_regions());
+  Mesh mesh = build_mesh(test::octahedron_with_regions());
   mesh.delete_face(FaceHandle(3), false);
   const fs::path path = file("deleted.off");
   write_mesh(mesh, path);
@@ -304,7 +285,7 @@ TEST_F(MeshIoTest, WriterSkipsDeletedFaces) {
 TEST_F(MeshIoTest, WriteToMissingDirectoryThrows) {
   const fs::path path = file("no/such/dir/mesh.off");
   try {
-    write_mesh(build_mesh(tetrahedron()), path);
+    write_mesh(build_mesh(test::tetrahedron_soup()), path);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
@@ -313,7 +294,8 @@ TEST_F(MeshIoTest, WriteToMissingDirectoryThrows) {
 
 // Invariant: writing with an unknown extension names the extension.
 TEST_F(MeshIoTest, WriteUnknownExtensionThrows) {
-  EXPECT_THROW(write_mesh(build_mesh(tetrahedron()), file("mesh.xyz")), InvalidInputError);
+  EXPECT_THROW(write_mesh(build_mesh(test::tetrahedron_soup()), file("mesh.xyz")),
+               InvalidInputError);
 }
 
 // ------------------------------------------------------------------ hand-written files
@@ -355,8 +337,8 @@ TEST_F(MeshIoTest, OffHeaderVariants) {
         std::string("OFF\r\n4 4 6\r\n+0 0 0\r\n1e0 0 0\r\n0 1.0 0\r\n0 0 1\r\n3 0 2 1\r\n"
                     "3 0 1 3\r\n3 0 3 2\r\n3 1 2 3\r\n")}) {
     const TriangleSoup soup = read_soup(write("t.off", content));
-    expect_same_points(soup, tetrahedron());
-    EXPECT_EQ(soup.triangles, tetrahedron().triangles);
+    expect_same_points(soup, test::tetrahedron_soup());
+    EXPECT_EQ(soup.triangles, test::tetrahedron_soup().triangles);
   }
 }
 
@@ -381,8 +363,8 @@ TEST_F(MeshIoTest, ObjIndexForms) {
                               "f -4/1 -1/2 -2/3\n"
                               "f 2 3 4\n");
   const TriangleSoup soup = read_soup(path);
-  expect_same_points(soup, tetrahedron());
-  EXPECT_EQ(soup.triangles, tetrahedron().triangles);
+  expect_same_points(soup, test::tetrahedron_soup());
+  EXPECT_EQ(soup.triangles, test::tetrahedron_soup().triangles);
   EXPECT_EQ(read_mesh(path).n_faces(), 4u);
 }
 
@@ -398,7 +380,7 @@ TEST_F(MeshIoTest, ObjQuadAndForwardReference) {
 // of a tetrahedron merge into 4 vertices.
 TEST_F(MeshIoTest, AsciiStlMergesCorners) {
   std::string text = "solid tetra\r\n";
-  for (const auto& t : corners_of(tetrahedron())) {
+  for (const auto& t : corners_of(test::tetrahedron_soup())) {
     text += "  FACET NORMAL 0 0 0\r\n    outer loop\r\n";
     for (const Point& p : t)
       text += fmt::format("      vertex {} {} {}\r\n", p[0], p[1], p[2]);
@@ -409,7 +391,7 @@ TEST_F(MeshIoTest, AsciiStlMergesCorners) {
   const TriangleSoup soup = read_soup(path);
   EXPECT_EQ(soup.points.size(), 4u);
   EXPECT_EQ(soup.triangles.size(), 4u);
-  EXPECT_EQ(corners_of(soup), corners_of(tetrahedron()));
+  EXPECT_EQ(corners_of(soup), corners_of(test::tetrahedron_soup()));
   EXPECT_EQ(read_mesh(path).n_edges(), 6u);
 }
 
@@ -417,11 +399,11 @@ TEST_F(MeshIoTest, AsciiStlMergesCorners) {
 // size is exactly 84 + 50 * count.
 TEST_F(MeshIoTest, BinaryStlStartingWithSolid) {
   const fs::path path =
-      write("solid.stl", binary_stl("solid but binary", 4, corners_of(tetrahedron())));
+      write("solid.stl", binary_stl("solid but binary", 4, corners_of(test::tetrahedron_soup())));
   const TriangleSoup soup = read_soup(path);
   EXPECT_EQ(soup.points.size(), 4u);
   EXPECT_EQ(soup.triangles.size(), 4u);
-  EXPECT_EQ(corners_of(soup), corners_of(tetrahedron()));
+  EXPECT_EQ(corners_of(soup), corners_of(test::tetrahedron_soup()));
 }
 
 // Invariant: a big-endian PLY with mixed types, extra properties, an extra element and a
@@ -447,7 +429,7 @@ TEST_F(MeshIoTest, BigEndianPlyWithExtraProperties) {
       "property short region\n"
       "property list ushort int8 other\n"
       "end_header\n");
-  const TriangleSoup tetra = tetrahedron();
+  const TriangleSoup tetra = test::tetrahedron_soup();
   for (const Point& p : tetra.points) {
     bytes.f32(static_cast<float>(p[0]), be).uint(200, 1).f32(static_cast<float>(p[1]), be);
     bytes.f64(p[2], be);
@@ -481,7 +463,7 @@ TEST_F(MeshIoTest, LittleEndianPlyFaceElementFirst) {
       "property float64 y\r\n"
       "property float64 z\r\n"
       "end_header\r\n");
-  const TriangleSoup tetra = tetrahedron();
+  const TriangleSoup tetra = test::tetrahedron_soup();
   for (int j = 0; j < 4; ++j) {
     bytes.uint(3, 2);
     for (int k = 0; k < 3; ++k)
@@ -671,7 +653,7 @@ TEST_F(MeshIoTest, AsciiStlErrors) {
 }
 
 TEST_F(MeshIoTest, BinaryStlTruncated) {
-  const auto corners = corners_of(tetrahedron());
+  const auto corners = corners_of(test::tetrahedron_soup());
   expect_error(write("t.stl", binary_stl("binary", 10, {corners[0]})),
                {"byte 134", "truncated", "declares 10 triangles", "after 1 of them"});
   expect_error(write("t.stl", binary_stl("binary", 4, corners).substr(0, 84 + 50 * 3 + 20)),
@@ -680,17 +662,19 @@ TEST_F(MeshIoTest, BinaryStlTruncated) {
 }
 
 TEST_F(MeshIoTest, BinaryStlAbsurdCount) {
-  expect_error(write("t.stl", binary_stl("binary", 0xffffffffu, corners_of(tetrahedron()))),
-               {"truncated", "declares 4294967295 triangles"});
+  expect_error(
+      write("t.stl", binary_stl("binary", 0xffffffffu, corners_of(test::tetrahedron_soup()))),
+      {"truncated", "declares 4294967295 triangles"});
 }
 
 TEST_F(MeshIoTest, BinaryStlTrailingBytes) {
-  expect_error(write("t.stl", binary_stl("binary", 1, corners_of(tetrahedron())) + "junk"),
-               {"byte 134", "not an STL file"});
+  expect_error(
+      write("t.stl", binary_stl("binary", 1, corners_of(test::tetrahedron_soup())) + "junk"),
+      {"byte 134", "not an STL file"});
 }
 
 TEST_F(MeshIoTest, BinaryStlNonFinite) {
-  auto corners = corners_of(tetrahedron());
+  auto corners = corners_of(test::tetrahedron_soup());
   corners[1][2][0] = std::numeric_limits<double>::quiet_NaN();
   expect_error(write("t.stl", binary_stl("binary", 4, corners)),
                {"byte 170", "triangle 1", "non-finite"});
@@ -763,7 +747,7 @@ std::string binary_ply_header(std::uint64_t vertices, std::uint64_t faces) {
 TEST_F(MeshIoTest, PlyBinaryTruncated) {
   const std::string head = binary_ply_header(4, 4);
   Bytes vertices;
-  for (const Point& p : tetrahedron().points)
+  for (const Point& p : test::tetrahedron_soup().points)
     vertices.f64(p[0]).f64(p[1]).f64(p[2]);
   const std::size_t end = head.size() + 50;
   expect_error(write("t.ply", head + vertices.str().substr(0, 50)),
@@ -782,7 +766,7 @@ TEST_F(MeshIoTest, PlyBinaryAbsurdCounts) {
   Bytes faces;
   faces.uint(3, 1).uint(0, 4).uint(1, 4).uint(2, 4);
   Bytes vertices;
-  for (const Point& p : tetrahedron().points)
+  for (const Point& p : test::tetrahedron_soup().points)
     vertices.f64(p[0]).f64(p[1]).f64(p[2]);
   expect_error(write("t.ply", binary_ply_header(4, 1000000000000) + vertices.str() + faces.str()),
                {"truncated", "inside 'face' element 1 of 1000000000000"});
@@ -796,7 +780,7 @@ TEST_F(MeshIoTest, PlyBinaryAbsurdCounts) {
 TEST_F(MeshIoTest, PlyBinaryIndexOutOfRange) {
   const std::string head = binary_ply_header(4, 1);
   Bytes body;
-  for (const Point& p : tetrahedron().points)
+  for (const Point& p : test::tetrahedron_soup().points)
     body.f64(p[0]).f64(p[1]).f64(p[2]);
   body.uint(3, 1).uint(0, 4).uint(1, 4).uint(static_cast<std::uint32_t>(-5), 4);
   const std::size_t offset = head.size() + 4 * 24 + 1 + 8;
