@@ -1,10 +1,12 @@
 #include "metrics/hausdorff_distance.h"
 
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/shared_faces.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <vector>
 
@@ -15,6 +17,7 @@ namespace {
 struct Cell {
   std::array<Point, 3> corners;
   std::array<double, 3> corner_distance;
+  std::array<int, 3> corner_face = {-1, -1, -1};  // faces of B nearest to the corners
   double upper = 0.0;
   std::size_t order = 0;  // creation order: breaks ties in the queue deterministically
 };
@@ -32,17 +35,26 @@ class DirectedSearch {
   DirectedSearch(const embree::TriangleScene& scene, const HausdorffOptions& options)
       : scene_(scene), options_(options) {}
 
-  DirectedHausdorff run(const Mesh& a) {
+  DirectedHausdorff run(const Mesh& a, const KnownDistances& known) {
     // Corner distances of the original triangles are shared through the vertices.
-    std::vector<double> vertex_distance(a.n_vertices(), 0.0);
-    for (auto v : a.vertices())
-      vertex_distance[v.idx()] = query(a.point(v)).distance;
+    VertexDistances computed;
+    const VertexDistances* vertices = known.vertices;
+    if (!vertices) {
+      computed = vertex_distances(a, scene_, known.b_face_of_a);
+      vertices = &computed;
+      result_.queries += computed.queries;
+    }
+    for (double d : vertices->distance)
+      result_.lower = std::max(result_.lower, d);
     for (auto f : a.faces()) {
+      if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
+        continue;  // lies on B: distance zero everywhere
       Cell cell;
       int k = 0;
       for (auto v : f.vertices()) {
         cell.corners[k] = a.point(v);
-        cell.corner_distance[k] = vertex_distance[v.idx()];
+        cell.corner_distance[k] = vertices->distance[v.idx()];
+        cell.corner_face[k] = vertices->nearest_face[v.idx()];
         ++k;
       }
       push(std::move(cell));
@@ -63,32 +75,50 @@ class DirectedSearch {
   }
 
  private:
-  embree::ClosestPoint query(const Point& p) {
+  // `bound`: an upper bound on the answer (Lipschitz from a point already measured).
+  embree::ClosestPoint query(const Point& p, double bound) {
     ++result_.queries;
-    const auto closest = scene_.closest_point(p);
+    const auto closest = scene_.closest_point(p, bound);
     result_.lower = std::max(result_.lower, closest.distance);
     return closest;
   }
 
+  // The largest distance from the cell's corners to triangle `face` of B: an upper bound
+  // of d(., B) over the cell, since the distance to one triangle is convex.
+  double single_triangle_bound(const std::array<Point, 3>& corners, int face) const {
+    const auto& t = scene_.triangle_of_face(face);
+    double bound = 0.0;
+    for (const Point& corner : corners) {
+      const Point q = embree::closest_point_on_triangle(corner, t[0], t[1], t[2]);
+      bound = std::max(bound, (q - corner).norm());
+    }
+    return bound;
+  }
+
   void push(Cell cell) {
     const auto& c = cell.corners;
+    const auto& d = cell.corner_distance;
     const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
-    const auto nearest = query(centroid);
+    const double centroid_bound =
+        std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
+                  d[2] + (centroid - c[2]).norm()});
+    const auto nearest = query(centroid, centroid_bound);
     // Bound (i): the distance to one triangle of B is convex, so its maximum over the
-    // cell is at a corner.
-    const auto& t = scene_.triangle_of_face(nearest.face);
-    double bound_single = 0.0;
-    for (const Point& corner : c) {
-      const Point q = embree::closest_point_on_triangle(corner, t[0], t[1], t[2]);
-      bound_single = std::max(bound_single, (q - corner).norm());
+    // cell is at a corner. Candidates: the triangles nearest to the centroid and to the
+    // corners.
+    double bound_single = nearest.face >= 0 ? single_triangle_bound(c, nearest.face)
+                                            : std::numeric_limits<double>::infinity();
+    const double largest_corner = *std::max_element(d.begin(), d.end());
+    for (int i = 0; i < 3 && bound_single > largest_corner; ++i) {
+      const int face = cell.corner_face[i];
+      if (face >= 0 && face != nearest.face)
+        bound_single = std::min(bound_single, single_triangle_bound(c, face));
     }
     // Bound (ii): every point lies within longest edge / sqrt(3) of a corner (the
     // equilateral triangle is the worst case), and the distance is 1-Lipschitz.
     const double longest = std::sqrt(
         std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
-    const double bound_lipschitz =
-        *std::max_element(cell.corner_distance.begin(), cell.corner_distance.end()) +
-        longest * 0.57735026919;
+    const double bound_lipschitz = largest_corner + longest * 0.57735026919;
     cell.upper = std::min(bound_single, bound_lipschitz);
     cell.order = next_order_++;
     queue_.push(std::move(cell));
@@ -96,16 +126,22 @@ class DirectedSearch {
 
   void split(const Cell& cell) {
     const auto& c = cell.corners;
+    const auto& d = cell.corner_distance;
+    const auto& f = cell.corner_face;
     const std::array<Point, 3> mid = {(c[0] + c[1]) * 0.5, (c[1] + c[2]) * 0.5,
                                       (c[2] + c[0]) * 0.5};
-    std::array<double, 3> mid_distance;
-    for (int i = 0; i < 3; ++i)
-      mid_distance[i] = query(mid[i]).distance;
-    const auto& d = cell.corner_distance;
-    push({{c[0], mid[0], mid[2]}, {d[0], mid_distance[0], mid_distance[2]}});
-    push({{mid[0], c[1], mid[1]}, {mid_distance[0], d[1], mid_distance[1]}});
-    push({{mid[2], mid[1], c[2]}, {mid_distance[2], mid_distance[1], d[2]}});
-    push({{mid[0], mid[1], mid[2]}, {mid_distance[0], mid_distance[1], mid_distance[2]}});
+    std::array<double, 3> md;
+    std::array<int, 3> mf;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const auto closest = query(mid[i], std::min(d[i], d[j]) + 0.5 * (c[j] - c[i]).norm());
+      md[i] = closest.distance;
+      mf[i] = closest.face;
+    }
+    push({{c[0], mid[0], mid[2]}, {d[0], md[0], md[2]}, {f[0], mf[0], mf[2]}});
+    push({{mid[0], c[1], mid[1]}, {md[0], d[1], md[1]}, {mf[0], f[1], mf[1]}});
+    push({{mid[2], mid[1], c[2]}, {md[2], md[1], d[2]}, {mf[2], mf[1], f[2]}});
+    push({{mid[0], mid[1], mid[2]}, {md[0], md[1], md[2]}, {mf[0], mf[1], mf[2]}});
   }
 
   const embree::TriangleScene& scene_;
@@ -118,16 +154,26 @@ class DirectedSearch {
 }  // namespace
 
 DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
-                                     const HausdorffOptions& options) {
-  return DirectedSearch(b_scene, options).run(a);
+                                     const HausdorffOptions& options, const KnownDistances& known) {
+  return DirectedSearch(b_scene, options).run(a, known);
 }
 
 HausdorffResult hausdorff_distance(const Mesh& a, const Mesh& b, const HausdorffOptions& options) {
-  const embree::TriangleScene a_scene(a);
-  const embree::TriangleScene b_scene(b);
+  const SharedFaces shared = shared_faces(a, b);
   HausdorffResult result;
-  result.a_to_b = directed_hausdorff(a, b_scene, options);
-  result.b_to_a = directed_hausdorff(b, a_scene, options);
+  // Each direction searches A's unshared faces against only the part of B they can reach.
+  const auto directed = [&options](const Mesh& from, const Mesh& to,
+                                   const std::vector<int>& to_face_of_from) {
+    const auto reachable = faces_of_b_within_reach(from, to, to_face_of_from);
+    if (reachable.empty())
+      return DirectedHausdorff{};  // every face of `from` lies on `to`
+    const embree::TriangleScene scene(to, reachable);
+    KnownDistances known;
+    known.b_face_of_a = &to_face_of_from;
+    return directed_hausdorff(from, scene, options, known);
+  };
+  result.a_to_b = directed(a, b, shared.b_face_of_a);
+  result.b_to_a = directed(b, a, shared.a_face_of_b);
   return result;
 }
 

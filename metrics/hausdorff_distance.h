@@ -6,16 +6,21 @@
 //  - a lower bound L is the largest distance found at any sampled point;
 //  - every triangle t of A has an upper bound U(t) >= max over t of d(x, B), the smaller of
 //    (i) max over t's corners of their distance to one single triangle T of B (distance
-//        to a triangle is convex, so its maximum over t is at a corner), and
+//        to a triangle is convex, so its maximum over t is at a corner; T is tried among
+//        the triangles nearest to t's centroid and corners), and
 //    (ii) max over the corners of d(corner, B) + longest edge / sqrt(3) (every point of t
 //        lies within that of a corner, and d(., B) is 1-Lipschitz);
 //  - the triangle with the largest U is split in four until U <= L + error_bound.
 // The true value then lies in [lower, upper] with upper - lower <= error_bound (unless the
-// work limit stops the search first, which the result says). Ties between closest faces
+// work limit stops the search first, which the result says). Every closest-point query
+// carries an upper bound from a point already measured (1-Lipschitz), which lets Embree's
+// BVH skip far boxes; the first pass over the vertices can be shared with the mean distance
+// (vertex_distances.h). Ties between closest faces
 // are broken by face index, so the same inputs give the same numbers on every run.
 #pragma once
 
 #include "core/mesh.h"
+#include "metrics/vertex_distances.h"
 
 #include <cstddef>
 
@@ -47,9 +52,12 @@ struct HausdorffResult {
   bool converged() const { return a_to_b.converged && b_to_a.converged; }
 };
 
-/// h(A, B) with `b_scene` an Embree scene of B (reuse it across calls).
+/// h(A, B) with `b_scene` an Embree scene of B (reuse it across calls; it may hold only the
+/// faces of B that points of A's unshared faces can be closest to) and, optionally, what is
+/// known already: A's vertex distances and the faces A shares with B (vertex_distances.h).
 DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
-                                     const HausdorffOptions& options = {});
+                                     const HausdorffOptions& options = {},
+                                     const KnownDistances& known = {});
 
 /// H(A, B): both directions.
 HausdorffResult hausdorff_distance(const Mesh& a, const Mesh& b,

@@ -1,6 +1,7 @@
 #include "metrics/surface_distance.h"
 
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/shared_faces.h"
 
 #include <algorithm>
 #include <array>
@@ -89,14 +90,16 @@ double triangle_triangle_distance(const std::array<Point, 3>& a, const std::arra
   return best;
 }
 
+// A (sub)triangle of A with bounds on the mean of d(x, B) and of d(x, B)^2 over it.
 struct Cell {
   std::array<Point, 3> corners;
   std::array<double, 3> corner_distance;
+  std::array<int, 3> corner_face = {-1, -1, -1};  // faces of B nearest to the corners
   double area = 0.0;
-  double lo = 0.0;
-  double hi = 0.0;
-  double key = 0.0;       // area * w^2
-  std::size_t order = 0;  // creation order: deterministic ties
+  double mean_lo = 0.0, mean_hi = 0.0;      // bounds of the cell's mean of d
+  double square_lo = 0.0, square_hi = 0.0;  // bounds of the cell's mean of d^2
+  double key = 0.0;                         // its share of the errors: split the largest
+  std::size_t order = 0;                    // creation order: deterministic ties
 };
 
 struct CellOrder {
@@ -107,74 +110,137 @@ struct CellOrder {
   }
 };
 
+// The errors of the estimates from the sums of area-weighted bound widths.
+struct Estimate {
+  double mean = 0.0, mean_error = 0.0, rms = 0.0, rms_error = 0.0;
+};
+
+Estimate estimate(double area, double sum_mean, double sum_mean_width, double sum_square,
+                  double sum_square_width) {
+  Estimate e;
+  e.mean = sum_mean / area;
+  e.mean_error = 0.5 * sum_mean_width / area;
+  // The mean square lies in [q - w, q + w]; the RMS in the square roots of that interval.
+  const double q = sum_square / area, w = 0.5 * sum_square_width / area;
+  const double hi = std::sqrt(std::max(0.0, q + w)), lo = std::sqrt(std::max(0.0, q - w));
+  e.rms = 0.5 * (hi + lo);
+  e.rms_error = 0.5 * (hi - lo);
+  return e;
+}
+
 class MeanSearch {
  public:
   MeanSearch(const embree::TriangleScene& scene, const MeanDistanceOptions& options)
       : scene_(scene), options_(options) {}
 
-  DirectedMeanDistance run(const Mesh& a) {
-    std::vector<double> vertex_distance(a.n_vertices(), 0.0);
-    for (auto v : a.vertices())
-      vertex_distance[v.idx()] = query(a.point(v)).distance;
+  DirectedMeanDistance run(const Mesh& a, const KnownDistances& known) {
+    VertexDistances computed;
+    const VertexDistances* vertices = known.vertices;
+    if (!vertices) {
+      computed = vertex_distances(a, scene_, known.b_face_of_a);
+      vertices = &computed;
+      result_.queries += computed.queries;
+    }
+    std::vector<Cell> initial;
     for (auto f : a.faces()) {
       Cell cell;
       int k = 0;
       for (auto v : f.vertices()) {
         cell.corners[k] = a.point(v);
-        cell.corner_distance[k] = vertex_distance[v.idx()];
+        cell.corner_distance[k] = vertices->distance[v.idx()];
+        cell.corner_face[k] = vertices->nearest_face[v.idx()];
         ++k;
       }
-      push(std::move(cell));
+      cell.area = triangle_area(cell.corners);
+      if (!(cell.area > 0.0))
+        continue;  // a degenerate triangle has no area to integrate
+      total_area_ += cell.area;
+      if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
+        continue;  // lies on B: contributes zero, exactly
+      bound(cell);
+      initial.push_back(std::move(cell));
     }
     if (total_area_ <= 0.0)
       return result_;
-    const double target = options_.error_bound * options_.error_bound * total_area_;
-    while (!queue_.empty() && sum_key_ > target) {
-      if (queue_.top().key <= 0.0)
-        break;
+    // The RMS error is about the mean-square error / (2 RMS): the scale that weighs the
+    // cells' mean-square widths against their mean widths when choosing what to split.
+    double sum_square = 0.0;
+    for (const Cell& cell : initial)
+      sum_square += cell.area * 0.5 * (cell.square_lo + cell.square_hi);
+    rms_scale_ = std::max(options_.error_bound, std::sqrt(sum_square / total_area_));
+    for (Cell& cell : initial)
+      enqueue(std::move(cell));
+    while (!queue_.empty() && !within_bound()) {
       if (result_.queries >= options_.max_queries) {
         result_.converged = false;
         break;
       }
       Cell cell = queue_.top();
       queue_.pop();
-      sum_key_ -= cell.key;
+      remove_sums(cell);
       split(cell);
     }
-    // Final sums from the cells themselves (no drift from the running sum).
-    double sum_mid = 0.0, sum_mid2 = 0.0, sum_w = 0.0, sum_w2 = 0.0;
+    // Final sums from the cells themselves (no drift from the running sums).
+    sum_mean_ = sum_mean_width_ = sum_square_ = sum_square_width_ = 0.0;
     while (!queue_.empty()) {
-      const Cell& cell = queue_.top();
-      const double mid = 0.5 * (cell.hi + cell.lo);
-      const double w = 0.5 * (cell.hi - cell.lo);
-      sum_mid += cell.area * mid;
-      sum_mid2 += cell.area * mid * mid;
-      sum_w += cell.area * w;
-      sum_w2 += cell.area * w * w;
+      add_sums(queue_.top(), 1.0);
       queue_.pop();
     }
+    const Estimate e =
+        estimate(total_area_, sum_mean_, sum_mean_width_, sum_square_, sum_square_width_);
     result_.area = total_area_;
-    result_.mean = sum_mid / total_area_;
-    result_.mean_error = sum_w / total_area_;
-    result_.rms = std::sqrt(sum_mid2 / total_area_);
-    result_.rms_error = std::sqrt(sum_w2 / total_area_);
-    result_.converged = result_.converged && result_.rms_error <= options_.error_bound;
+    result_.mean = e.mean;
+    result_.mean_error = e.mean_error;
+    result_.rms = e.rms;
+    result_.rms_error = e.rms_error;
+    result_.converged = result_.converged && e.mean_error <= options_.error_bound &&
+                        e.rms_error <= options_.error_bound;
     return result_;
   }
 
  private:
-  embree::ClosestPoint query(const Point& p) {
+  embree::ClosestPoint query(const Point& p, double bound) {
     ++result_.queries;
-    return scene_.closest_point(p);
+    return scene_.closest_point(p, bound);
   }
 
-  void push(Cell cell) {
+  bool within_bound() const {
+    const Estimate e =
+        estimate(total_area_, sum_mean_, sum_mean_width_, sum_square_, sum_square_width_);
+    return e.mean_error <= options_.error_bound && e.rms_error <= options_.error_bound;
+  }
+
+  void add_sums(const Cell& cell, double sign) {
+    sum_mean_ += sign * cell.area * 0.5 * (cell.mean_lo + cell.mean_hi);
+    sum_mean_width_ += sign * cell.area * (cell.mean_hi - cell.mean_lo);
+    sum_square_ += sign * cell.area * 0.5 * (cell.square_lo + cell.square_hi);
+    sum_square_width_ += sign * cell.area * (cell.square_hi - cell.square_lo);
+  }
+  void remove_sums(const Cell& cell) { add_sums(cell, -1.0); }
+
+  void enqueue(Cell cell) {
+    cell.key = cell.area * ((cell.mean_hi - cell.mean_lo) +
+                            (cell.square_hi - cell.square_lo) / (2.0 * rms_scale_));
+    cell.order = next_order_++;
+    add_sums(cell, 1.0);
+    queue_.push(std::move(cell));
+  }
+
+  // The distance to one triangle of B at the cell's corners.
+  std::array<double, 3> corner_distances_to(const std::array<Point, 3>& c, int face) const {
+    const auto& t = scene_.triangle_of_face(face);
+    std::array<double, 3> f;
+    for (int i = 0; i < 3; ++i)
+      f[i] = (embree::closest_point_on_triangle(c[i], t[0], t[1], t[2]) - c[i]).norm();
+    return f;
+  }
+
+  // Bounds of d over the cell, pointwise (first order) and of its mean and mean square
+  // (second order).
+  void bound(Cell& cell) {
     const auto& c = cell.corners;
-    cell.area = triangle_area(c);
-    if (!(cell.area > 0.0))
-      return;  // a degenerate triangle has no area to integrate
+    const auto& d = cell.corner_distance;
     const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
-    const auto nearest = query(centroid);
     // Farthest any point of the cell is from a corner (its longest incident edge) or from
     // the centroid (its farthest corner).
     const std::array<double, 3> edge = {(c[1] - c[0]).norm(), (c[2] - c[1]).norm(),
@@ -184,24 +250,35 @@ class MeanSearch {
     double centroid_radius = 0.0;
     for (const Point& corner : c)
       centroid_radius = std::max(centroid_radius, (corner - centroid).norm());
+    const auto nearest =
+        query(centroid, std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
+                                  d[2] + (centroid - c[2]).norm()}));
+
+    // First order, pointwise: 1-Lipschitz from the centroid and the corners.
     double lo = std::max(0.0, nearest.distance - centroid_radius);
     double hi = nearest.distance + centroid_radius;
     for (int i = 0; i < 3; ++i) {
-      lo = std::max(lo, cell.corner_distance[i] - corner_radius[i]);
-      hi = std::min(hi, cell.corner_distance[i] + corner_radius[i]);
+      lo = std::max(lo, d[i] - corner_radius[i]);
+      hi = std::min(hi, d[i] + corner_radius[i]);
     }
-    const auto& t = scene_.triangle_of_face(nearest.face);
-    double bound_single = 0.0;
-    for (const Point& corner : c) {
-      const Point q = embree::closest_point_on_triangle(corner, t[0], t[1], t[2]);
-      bound_single = std::max(bound_single, (q - corner).norm());
+    // The distance f_T to a single triangle T of B is convex and d <= f_T: max f_T over
+    // the cell is at a corner, and the cell's mean of f_T (of f_T^2, also convex) is at
+    // most the mean of its corner values. T: the triangles nearest to centroid and corners.
+    double mean_hi = std::numeric_limits<double>::infinity();
+    double square_hi = std::numeric_limits<double>::infinity();
+    for (int face : {nearest.face, cell.corner_face[0], cell.corner_face[1], cell.corner_face[2]}) {
+      if (face < 0)
+        continue;
+      const auto f = corner_distances_to(c, face);
+      hi = std::min(hi, std::max({f[0], f[1], f[2]}));
+      mean_hi = std::min(mean_hi, (f[0] + f[1] + f[2]) / 3.0);
+      square_hi = std::min(square_hi, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / 3.0);
     }
-    hi = std::min(hi, bound_single);
-    // The exact minimum over the cell: its distance to the triangles of B that can hold
-    // the closest point of some point of the cell (within hi + centroid_radius of the
-    // centroid). Only where the cheap bound leaves a gap that matters: a cell with
-    // w <= bound / 4 already contributes at most a sixteenth of the allowed error.
-    if (0.5 * (hi - lo) > 0.25 * options_.error_bound) {
+    // The exact minimum over the cell where the cell may touch B (there the distance has
+    // a kink that no smooth bound follows): its distance to the triangles of B that can
+    // hold the closest point of some point of the cell (within hi + centroid_radius of the
+    // centroid). Only where the gap matters: w <= bound / 4 contributes little.
+    if (0.5 * (hi - lo) > 0.25 * options_.error_bound && lo < centroid_radius) {
       double minimum = std::numeric_limits<double>::infinity();
       for (int face : scene_.faces_within(centroid, hi + centroid_radius))
         minimum = std::min(minimum, triangle_triangle_distance(c, scene_.triangle_of_face(face)));
@@ -209,31 +286,61 @@ class MeanSearch {
         lo = std::max(lo, minimum);
     }
     hi = std::max(lo, hi);
-    cell.lo = lo;
-    cell.hi = hi;
-    const double w = 0.5 * (hi - lo);
-    cell.key = cell.area * w * w;
-    cell.order = next_order_++;
-    if (!splitting_)
-      total_area_ += cell.area;
-    sum_key_ += cell.key;
-    queue_.push(std::move(cell));
+    // Second order (semiconcavity): |x|^2 - d(x)^2 = max over y of B of (2 x.y - |y|^2) is
+    // convex, so with barycentric weights l_i of x,
+    //   d(x)^2 >= sum l_i d_i^2 - sum l_i |c_i - x|^2,
+    // whose mean over the cell is mean(d_i^2) - V with V = sum |c_i - g|^2 / 4 (the
+    // triangle's second moment about its centroid g). And sqrt(a - b) >= sqrt(a) - b /
+    // sqrt(a) with sqrt(sum l_i d_i^2) >= sum l_i d_i >= min d_i gives
+    //   mean of d >= mean(d_i) - V / min(d_i).
+    double v = 0.0;
+    for (const Point& corner : c)
+      v += (corner - centroid).sqrnorm();
+    v *= 0.25;
+    const double square_lo = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / 3.0 - v;
+    const double d_min = std::min({d[0], d[1], d[2]});
+    const double mean_lo = d_min > 0.0 ? (d[0] + d[1] + d[2]) / 3.0 - v / d_min
+                                       : -std::numeric_limits<double>::infinity();
+    cell.mean_lo = std::max(lo, mean_lo);
+    cell.mean_hi = std::min(hi, mean_hi);
+    cell.square_lo = std::max(lo * lo, square_lo);
+    cell.square_hi = std::min(hi * hi, square_hi);
+    // Rounding may cross the bounds by an ulp: then they meet.
+    if (cell.mean_lo > cell.mean_hi)
+      cell.mean_lo = cell.mean_hi = 0.5 * (cell.mean_lo + cell.mean_hi);
+    if (cell.square_lo > cell.square_hi)
+      cell.square_lo = cell.square_hi = 0.5 * (cell.square_lo + cell.square_hi);
   }
 
   void split(const Cell& cell) {
-    splitting_ = true;
     const auto& c = cell.corners;
+    const auto& d = cell.corner_distance;
+    const auto& f = cell.corner_face;
     const std::array<Point, 3> mid = {(c[0] + c[1]) * 0.5, (c[1] + c[2]) * 0.5,
                                       (c[2] + c[0]) * 0.5};
     std::array<double, 3> md;
-    for (int i = 0; i < 3; ++i)
-      md[i] = query(mid[i]).distance;
-    const auto& d = cell.corner_distance;
-    push({{c[0], mid[0], mid[2]}, {d[0], md[0], md[2]}});
-    push({{mid[0], c[1], mid[1]}, {md[0], d[1], md[1]}});
-    push({{mid[2], mid[1], c[2]}, {md[2], md[1], d[2]}});
-    push({{mid[0], mid[1], mid[2]}, {md[0], md[1], md[2]}});
+    std::array<int, 3> mf;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const auto closest = query(mid[i], std::min(d[i], d[j]) + 0.5 * edge_length(c[i], c[j]));
+      md[i] = closest.distance;
+      mf[i] = closest.face;
+    }
+    const std::array<Cell, 4> children = {
+        Cell{{c[0], mid[0], mid[2]}, {d[0], md[0], md[2]}, {f[0], mf[0], mf[2]}},
+        Cell{{mid[0], c[1], mid[1]}, {md[0], d[1], md[1]}, {mf[0], f[1], mf[1]}},
+        Cell{{mid[2], mid[1], c[2]}, {md[2], md[1], d[2]}, {mf[2], mf[1], f[2]}},
+        Cell{{mid[0], mid[1], mid[2]}, {md[0], md[1], md[2]}, {mf[0], mf[1], mf[2]}}};
+    for (Cell child : children) {
+      child.area = triangle_area(child.corners);
+      if (!(child.area > 0.0))
+        continue;
+      bound(child);
+      enqueue(std::move(child));
+    }
   }
+
+  static double edge_length(const Point& p, const Point& q) { return (q - p).norm(); }
 
   const embree::TriangleScene& scene_;
   const MeanDistanceOptions& options_;
@@ -241,25 +348,36 @@ class MeanSearch {
   std::priority_queue<Cell, std::vector<Cell>, CellOrder> queue_;
   std::size_t next_order_ = 0;
   double total_area_ = 0.0;
-  double sum_key_ = 0.0;
-  bool splitting_ = false;
+  double rms_scale_ = 0.0;
+  double sum_mean_ = 0.0, sum_mean_width_ = 0.0, sum_square_ = 0.0, sum_square_width_ = 0.0;
 };
 
 }  // namespace
 
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
-                                            const MeanDistanceOptions& options) {
-  return MeanSearch(b_scene, options).run(a);
+                                            const MeanDistanceOptions& options,
+                                            const KnownDistances& known) {
+  return MeanSearch(b_scene, options).run(a, known);
 }
 
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
                                  const SurfaceDistanceOptions& options) {
+  // One first pass per direction, shared by the Hausdorff and the mean searches; faces the
+  // two meshes share exactly are skipped by both.
+  const SharedFaces shared = shared_faces(a, b);
+  const VertexDistances a_vertices = vertex_distances(a, b_scene, &shared.b_face_of_a);
+  const VertexDistances b_vertices = vertex_distances(b, a_scene, &shared.a_face_of_b);
+  const KnownDistances a_known{&a_vertices, &shared.b_face_of_a};
+  const KnownDistances b_known{&b_vertices, &shared.a_face_of_b};
   SurfaceDistance result;
-  result.hausdorff.a_to_b = directed_hausdorff(a, b_scene, options.hausdorff);
-  result.hausdorff.b_to_a = directed_hausdorff(b, a_scene, options.hausdorff);
-  result.a_to_b = directed_mean_distance(a, b_scene, options.mean);
-  result.b_to_a = directed_mean_distance(b, a_scene, options.mean);
+  result.hausdorff.a_to_b = directed_hausdorff(a, b_scene, options.hausdorff, a_known);
+  result.hausdorff.b_to_a = directed_hausdorff(b, a_scene, options.hausdorff, b_known);
+  result.a_to_b = directed_mean_distance(a, b_scene, options.mean, a_known);
+  result.b_to_a = directed_mean_distance(b, a_scene, options.mean, b_known);
+  // The shared first pass counts once, with the Hausdorff search.
+  result.hausdorff.a_to_b.queries += a_vertices.queries;
+  result.hausdorff.b_to_a.queries += b_vertices.queries;
   return result;
 }
 

@@ -6,23 +6,24 @@
 //  - directed RMS    r(A, B) = sqrt((1 / area(A)) * integral over A of d(x, B)^2 dA);
 //  - the symmetric values are the larger of the two directions (as Metro reports them);
 //  - the Hausdorff distance is hausdorff_distance.h's.
-// The integrals are computed by branch and bound on the triangles of A, as the Hausdorff
-// distance is: each (sub)triangle t gets an interval [lo(t), hi(t)] that contains d(x, B)
-// for every x of t:
-//  - hi(t): the smaller of the largest corner distance to the single triangle of B closest
-//    to t's centroid (convexity), and min over sample points p of d(p, B) + r(p), where r(p)
-//    is the farthest any point of t is from p (1-Lipschitz);
-//  - lo(t): the larger of max(0, max over sample points p of d(p, B) - r(p)) and, where
-//    that leaves a gap wider than half the error bound, the exact minimum of d over t: the
-//    triangle-triangle distance from t to the triangles of B within hi(t) + r(centroid) of t's
-//    centroid (the only ones that can hold a closest point of a point of t).
-// With w(t) = (hi - lo) / 2 and the estimate m(t) = (hi + lo) / 2 on t, the error of the
-// mean is at most sum area(t) w(t) / area(A), and (Minkowski) the error of the RMS at most
-// sqrt(sum area(t) w(t)^2 / area(A)), which is also >= the mean's. The triangle with the
-// largest area(t) w(t)^2 is split in four until that RMS bound is <= the error bound, so
-// both values are within the bound. Sample points are corners and centroids; closest
-// points come from Embree (rtcPointQuery), ties broken by face index: the same inputs give
-// the same numbers on every run.
+// The integrals are computed by branch and bound on the triangles of A that B does not share
+// (shared_faces.h: d = 0 there), as the Hausdorff distance is. Each (sub)triangle t gets
+// bounds on its mean of d and of d^2:
+//  - first order, pointwise: d(x, B) in [lo(t), hi(t)] for x in t, from 1-Lipschitz bounds
+//    at the corners and centroid, the convex distance to the single triangle of B closest to
+//    the centroid or a corner, and, where t may touch B, the exact minimum of d over t (the
+//    triangle-triangle distance to the triangles of B that can hold a closest point);
+//  - second order: the mean of the convex f_T (distance to one triangle T, d <= f_T) and of
+//    f_T^2 is at most their corner mean; from below, |x|^2 - d(x)^2 is convex (d is
+//    semiconcave), so d(x)^2 >= sum l_i d_i^2 - sum l_i |c_i - x|^2 (l_i barycentric), whose
+//    cell mean is mean(d_i^2) - V with V = sum |c_i - g|^2 / 4; and the mean of d is at least
+//    mean(d_i) - V / min(d_i). These shrink with the square of the cell size.
+// The mean is the sum of the cells' mid-bounds (error: half the area-weighted width), the
+// RMS the square root of the mean-square's mid-bound (error: half the width of the roots of
+// its interval). The cell with the largest share of the errors is split in four until both
+// are within the error bound. Closest points come from Embree (rtcPointQuery) with an upper
+// bound on each answer, ties broken by face index: the same inputs give the same numbers on
+// every run.
 #pragma once
 
 #include "core/mesh.h"
@@ -58,7 +59,8 @@ struct DirectedMeanDistance {
 /// m(A, B) and r(A, B) with `b_scene` an Embree scene of B. A mesh without area gives
 /// zeros with area 0.
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
-                                            const MeanDistanceOptions& options = {});
+                                            const MeanDistanceOptions& options = {},
+                                            const KnownDistances& known = {});
 
 struct SurfaceDistanceOptions {
   HausdorffOptions hausdorff;  ///< error bound of the Hausdorff distance (model units)

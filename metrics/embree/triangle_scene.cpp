@@ -116,7 +116,20 @@ RTCRay make_ray(const Point& origin, const Point& direction, double t_near, doub
 
 }  // namespace
 
-TriangleScene::TriangleScene(const Mesh& mesh) {
+namespace {
+
+std::vector<int> all_faces(const Mesh& mesh) {
+  std::vector<int> faces(mesh.n_faces());
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    faces[i] = static_cast<int>(i);
+  return faces;
+}
+
+}  // namespace
+
+TriangleScene::TriangleScene(const Mesh& mesh) : TriangleScene(mesh, all_faces(mesh)) {}
+
+TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces) {
   device_ = rtcNewDevice(nullptr);
   if (!device_)
     throw std::runtime_error("Embree: cannot create a device");
@@ -124,11 +137,16 @@ TriangleScene::TriangleScene(const Mesh& mesh) {
   scene_ = rtcNewScene(device_);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
 
+  // In increasing face order, so that the primitive order breaks ties as the face order.
+  std::vector<int> sorted_faces = faces;
+  std::sort(sorted_faces.begin(), sorted_faces.end());
+  sorted_faces.erase(std::unique(sorted_faces.begin(), sorted_faces.end()), sorted_faces.end());
   primitive_of_face_.assign(mesh.n_faces(), -1);
-  for (auto f : mesh.faces()) {
+  for (int face : sorted_faces) {
+    const auto f = mesh.face_handle(face);
     std::array<Point, 3> tri;
     int k = 0;
-    for (auto v : f.vertices())
+    for (auto v : mesh.fv_range(f))
       tri[k++] = mesh.point(v);
     primitive_of_face_[f.idx()] = static_cast<int>(triangles_.size());
     triangles_.push_back(tri);
@@ -169,6 +187,10 @@ TriangleScene::~TriangleScene() {
 }
 
 ClosestPoint TriangleScene::closest_point(const Point& p) const {
+  return closest_point(p, std::numeric_limits<double>::infinity());
+}
+
+ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_bound) const {
   PointQueryState state;
   state.triangles = &triangles_;
   state.query = p;
@@ -178,11 +200,21 @@ ClosestPoint TriangleScene::closest_point(const Point& p) const {
   query.z = static_cast<float>(p[2]);
   query.time = 0.0f;
   query.radius = std::numeric_limits<float>::infinity();
+  if (std::isfinite(distance_upper_bound)) {
+    // Padded by the single-precision rounding of the BVH's boxes and of the query point,
+    // so that no triangle within the bound is culled; then rounded up.
+    const double pad =
+        1e-6 * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + distance_upper_bound);
+    query.radius = std::nextafter(static_cast<float>(distance_upper_bound + pad),
+                                  std::numeric_limits<float>::infinity());
+  }
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(scene_, &query, &context, closest_point_callback, &state);
   ClosestPoint result;
   if (state.best_primitive == RTC_INVALID_GEOMETRY_ID) {
+    if (std::isfinite(distance_upper_bound) && !triangles_.empty())
+      return closest_point(p);  // the bound did not hold: search without it
     result.distance = std::numeric_limits<double>::infinity();
     return result;
   }

@@ -1,0 +1,31 @@
+// Faces that two meshes share exactly: the same three points, bit for bit, in either
+// orientation. The distance from such a face to the other surface is zero at every point,
+// so the distance searches (hausdorff_distance.h, surface_distance.h) need no closest-point
+// query there. A repaired model shares every face away from its holes with the complete
+// model, so in an evaluation most faces are shared and only the hole region is searched.
+#pragma once
+
+#include "core/mesh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace holebench {
+
+struct SharedFaces {
+  std::vector<int> b_face_of_a;  ///< by face index of A: the same face in B, or -1
+  std::vector<int> a_face_of_b;  ///< by face index of B: the same face in A, or -1
+  std::size_t count = 0;         ///< number of shared faces
+};
+
+SharedFaces shared_faces(const Mesh& a, const Mesh& b);
+
+/// The faces of B (sorted) that can hold a closest point of a point on A's faces not shared
+/// with B. Every such point x has d(x, B) <= |x - s| for any vertex s of a shared face (s
+/// is a point of B), so with R the largest distance from the box of the unshared faces to
+/// the best such s, only B's faces whose boxes meet that box grown by R are needed. Empty
+/// when A shares every face; every face of B when A shares none.
+std::vector<int> faces_of_b_within_reach(const Mesh& a, const Mesh& b,
+                                         const std::vector<int>& b_face_of_a);
+
+}  // namespace holebench

@@ -1,0 +1,39 @@
+// The distance of every vertex of a mesh A to a surface B: the first pass that the
+// Hausdorff and the mean-distance searches share (evaluate it once, pass it to both).
+//
+// A vertex of a face that A shares exactly with B (shared_faces.h) is a point of B: its
+// distance is zero without a query. Every other vertex is queried with an upper bound on
+// its answer taken from its neighbours already done, d(v, B) <= d(u, B) + |v - u| (the
+// distance is 1-Lipschitz), so that Embree's BVH only visits boxes near the answer. The
+// bound changes the work, never the answer.
+#pragma once
+
+#include "core/mesh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace holebench {
+
+namespace embree {
+class TriangleScene;
+}
+
+struct VertexDistances {
+  std::vector<double> distance;   ///< by vertex index
+  std::vector<int> nearest_face;  ///< a face of B holding a closest point, by vertex index
+  std::size_t queries = 0;
+};
+
+/// `b_face_of_a` (optional): by face of A, the face of B it coincides with, or -1.
+VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_scene,
+                                 const std::vector<int>* b_face_of_a = nullptr);
+
+/// What is already known about A against B, to skip the searches' first pass; both parts
+/// optional.
+struct KnownDistances {
+  const VertexDistances* vertices = nullptr;      ///< from vertex_distances(a, b_scene, ...)
+  const std::vector<int>* b_face_of_a = nullptr;  ///< faces of A lying on B: skipped
+};
+
+}  // namespace holebench
