@@ -6,6 +6,7 @@
 #include "harness/oracle_user.h"
 #include "harness/render/case_view.h"
 #include "harness/render/snapshot.h"
+#include "methods/common/cgal_random.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
@@ -63,6 +64,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
   record.job = job;
   Case c;
   try {
+    seed_cgal_default_random();
     c = options.catalog ? options.catalog->make(job.case_id, job.seed, job.noise_percent)
                         : generators::make_case(job.case_id, job.seed, job.noise_percent);
     record.case_family = c.family;
@@ -80,6 +82,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     MethodParameters parameters;
     parameters.structure_size = c.parameters.structure_size;
+    seed_cgal_default_random();
     MethodResult result = method->run(c.input, parameters, *user);
     record.method_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -34,7 +34,8 @@ MethodResult fill_holes_liepa_cgal(const Mesh& holed, const LiepaCgalOptions& op
     std::vector<VertexHandle> vertices;
     const HalfedgeHandle border = loops[i].halfedges.front();
     const auto params = CGAL::parameters::density_control_factor(options.density_control_factor)
-                            .fairing_continuity(options.fairing_continuity);
+                            .fairing_continuity(options.fairing_continuity)
+                            .use_delaunay_triangulation(false);
     bool fair_ok = true;
     if (options.refine && options.fair) {
       fair_ok = std::get<0>(PMP::triangulate_refine_and_fair_hole(
