@@ -8,6 +8,10 @@
 #include "harness/report/report.h"
 #include "harness/results_reader.h"
 #include "harness/run_command.h"
+#include "harness/shard.h"
+#include "harness/shard_merge.h"
+#include "harness/shard_status.h"
+#include "harness/slurm_submit.h"
 #include "harness/suite.h"
 #include "methods/registry.h"
 
@@ -17,6 +21,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <limits>
 
 namespace {
 
@@ -89,6 +94,45 @@ void add_catalog_options(CLI::App* command, CatalogOptions& catalog, bool& no_ca
   command->add_option("--cad-dir", catalog.cad_data_dir,
                       "Folder with the CGAL data set's meshes (default: extracted by the build; "
                       "or $HOLEBENCH_CAD_DIR)");
+}
+
+// A CLI11 validator from a parser that throws std::invalid_argument with the message.
+template <typename Parse>
+CLI::Validator parsed_by(Parse parse, const std::string& name) {
+  return CLI::Validator(
+      [parse](std::string& text) {
+        try {
+          parse(text);
+          return std::string();
+        } catch (const std::exception& e) {
+          return std::string(e.what());
+        }
+      },
+      "", name);
+}
+
+std::vector<std::size_t> shard_indices(const std::string& list) {
+  if (list.empty())
+    return {};
+  return holebench::harness::parse_shard_list(list, std::numeric_limits<std::size_t>::max());
+}
+
+void print_submission(const holebench::harness::SlurmSubmitResult& result,
+                      const std::filesystem::path& dir) {
+  std::string command;
+  for (const auto& arg : result.sbatch_command)
+    command += (command.empty() ? "" : " ") + holebench::harness::shell_quote(arg);
+  if (result.submitted) {
+    fmt::print("Submitted Slurm job {}: array {}\n", result.slurm_job_id, result.array);
+  } else {
+    fmt::print("Dry run: not submitted. To submit:\n  {}\n", command);
+  }
+  const auto absolute = std::filesystem::absolute(dir).lexically_normal().string();
+  fmt::print(
+      "  script:   {}\n  manifest: {}\n  logs:     {}/slurm/shard-<I>.log\n"
+      "  status:   holebench slurm status --out {}\n"
+      "  merge:    holebench merge --shards {}\n",
+      result.script.string(), result.manifest.string(), absolute, absolute, absolute);
 }
 
 }  // namespace
@@ -169,6 +213,12 @@ int main(int argc, char** argv) {
   bool resume = false;
   run->add_flag("--resume", resume,
                 "Keep the records already in DIR/records.jsonl and run the rest");
+  std::string shard_text;
+  run->add_option("--shard", shard_text,
+                  "Run only shard I of N (0 <= I < N): the suite's jobs i with i mod N = I, in "
+                  "plan order; the N shards together are the suite, each job once (e.g. 0/4)")
+      ->type_name("I/N")
+      ->check(parsed_by(holebench::harness::parse_shard, "I/N"));
   run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
                   "Error bound of the Hausdorff distance, relative to the diagonal")
       ->capture_default_str()
@@ -176,14 +226,98 @@ int main(int argc, char** argv) {
   add_catalog_options(run, run_options.catalog, no_cad);
 
   std::vector<std::filesystem::path> merge_inputs;
-  std::filesystem::path merge_out;
-  auto* merge =
-      app.add_subcommand("merge", "Join results files (matched by job id; later files win)");
-  merge->add_option("inputs", merge_inputs, "results.json files")
+  std::filesystem::path merge_out, merge_shards_dir;
+  bool merge_allow_incomplete = false;
+  auto* merge = app.add_subcommand(
+      "merge",
+      "Join results files (matched by job id; later files win), or with --shards the shards of "
+      "a sharded run into one results file equal to a single-machine run's, up to timings");
+  auto* merge_inputs_option =
+      merge->add_option("inputs", merge_inputs, "results.json files")->check(CLI::ExistingFile);
+  auto* merge_shards_option =
+      merge
+          ->add_option("--shards", merge_shards_dir,
+                       "A sharded run's folder (holebench slurm submit --out DIR): merges its "
+                       "shard-I/ results in the suite's order; exit code 1, naming the shards, "
+                       "if some are missing or incomplete")
+          ->check(CLI::ExistingDirectory)
+          ->excludes(merge_inputs_option);
+  merge_inputs_option->excludes(merge_shards_option);
+  merge->add_option("--out", merge_out,
+                    "Output folder for the merged results.json and results.csv (with --shards, "
+                    "default: the sharded run's folder)");
+  merge->add_flag("--allow-incomplete", merge_allow_incomplete,
+                  "With --shards: merge the records there are even if shards are not complete");
+
+  // holebench slurm submit | status | resubmit
+  auto* slurm = app.add_subcommand(
+      "slurm",
+      "Run a suite on a Slurm cluster: a job array with one task per shard (holebench run "
+      "--shard I/N); see docs/cluster.md");
+  slurm->require_subcommand(1);
+  holebench::harness::SlurmSubmitOptions submit_options;
+  std::string submit_only;
+  bool submit_no_snapshots = false;
+  int submit_workers = 0;
+  double submit_timeout = -1.0;
+  auto* slurm_submit = slurm->add_subcommand(
+      "submit",
+      "Write DIR/shards.json and the sbatch script DIR/slurm/shards.sbatch (--array=0-(N-1), "
+      "task I runs `holebench run --suite NAME --shard I/N --out DIR/shard-I --resume`) and "
+      "submit it. sbatch options go after --, e.g. -- --partition=short --time=02:00:00");
+  slurm_submit->add_option("--suite", submit_options.suite, "Suite name or path")->required();
+  slurm_submit
+      ->add_option("--shards", submit_options.shard_count,
+                   "Number of shards N (array tasks 0 to N-1)")
       ->required()
-      ->check(CLI::ExistingFile);
-  merge->add_option("--out", merge_out, "Output folder for the merged results.json and results.csv")
-      ->required();
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+  slurm_submit->add_option("--out", submit_options.out_dir, "The sharded run's folder")->required();
+  slurm_submit->add_option("--workers,-j", submit_workers,
+                           "Jobs at once in each task (default: the CPUs Slurm gives the task, "
+                           "$SLURM_CPUS_PER_TASK)");
+  slurm_submit
+      ->add_option("--timeout", submit_timeout,
+                   "Seconds a job may take before it is stopped (default: the suite's)")
+      ->check(CLI::NonNegativeNumber);
+  slurm_submit->add_flag("--no-snapshots", submit_no_snapshots, "Do not render a PNG per job");
+  slurm_submit->add_option("--holebench", submit_options.holebench,
+                           "The holebench binary the tasks run, on a file system the nodes "
+                           "share (default: this one)");
+  slurm_submit
+      ->add_option("--only", submit_only,
+                   "Submit only these shards (array indices), e.g. 1,3 or 0-2,7")
+      ->check(parsed_by(shard_indices, "LIST"));
+  slurm_submit->add_flag("--dry-run", submit_options.dry_run,
+                         "Write the manifest and the script and print the sbatch command, "
+                         "without submitting");
+  slurm_submit->add_option("sbatch_options", submit_options.sbatch_options,
+                           "Options for sbatch, after --");
+
+  std::filesystem::path slurm_status_dir;
+  auto* slurm_status = slurm->add_subcommand(
+      "status",
+      "Each shard of a sharded run: complete, incomplete (running, or its task failed) or "
+      "missing, by name; exit code 1 unless all are complete");
+  slurm_status->add_option("--out", slurm_status_dir, "The sharded run's folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+
+  holebench::harness::SlurmResubmitOptions resubmit_options;
+  std::string resubmit_only;
+  auto* slurm_resubmit = slurm->add_subcommand(
+      "resubmit",
+      "Submit again the shards that are not complete (or --only those), as array indices of the "
+      "same script; each keeps the jobs it had finished. sbatch options go after -- (default: "
+      "those of the submission)");
+  slurm_resubmit->add_option("--out", resubmit_options.dir, "The sharded run's folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  slurm_resubmit->add_option("--only", resubmit_only, "Resubmit only these shards, e.g. 1,3")
+      ->check(parsed_by(shard_indices, "LIST"));
+  slurm_resubmit->add_flag("--dry-run", resubmit_options.dry_run,
+                           "Print the sbatch command without submitting");
+  slurm_resubmit->add_option("sbatch_options", resubmit_options.sbatch_options,
+                             "Options for sbatch, after --");
 
   auto* suites = app.add_subcommand("suites", "List the suites (suites/*.json)");
 
@@ -281,11 +415,38 @@ int main(int argc, char** argv) {
       if (timeout >= 0.0)
         options.runner.timeout_seconds = timeout;
       options.runner.resume = resume;
+      if (!shard_text.empty())
+        options.shard = holebench::harness::parse_shard(shard_text);
       const auto summary = holebench::harness::run_jobs(options);
       print_summary_table(summary);
       return 0;
     }
+    if (merge->parsed() && !merge_shards_dir.empty()) {
+      holebench::harness::ShardMergeOptions options;
+      options.dir = merge_shards_dir;
+      options.out_dir = merge_out;
+      options.allow_incomplete = merge_allow_incomplete;
+      const auto result = holebench::harness::merge_shards(options);
+      if (!result.written) {
+        std::fprintf(stderr, "holebench: not merged: some shards are not complete\n%s",
+                     holebench::harness::format_shard_status(result.status).c_str());
+        return 1;
+      }
+      if (!result.missing_jobs.empty()) {
+        std::fprintf(stderr, "holebench: %zu of %zu jobs missing (incomplete shards):\n%s",
+                     result.missing_jobs.size(), result.status.manifest.job_ids.size(),
+                     holebench::harness::format_shard_status(result.status).c_str());
+      }
+      std::fprintf(stderr, "%zu records from %zu shards into %s\n", result.merged.records.size(),
+                   result.status.shards.size(), result.results_json.c_str());
+      return 0;
+    }
     if (merge->parsed()) {
+      if (merge_inputs.empty() || merge_out.empty()) {
+        std::fprintf(stderr,
+                     "holebench merge: give results.json files and --out, or --shards DIR\n");
+        return 2;
+      }
       std::vector<holebench::harness::ResultsData> sets;
       for (const auto& path : merge_inputs)
         sets.push_back(holebench::harness::read_results_json(path));
@@ -296,6 +457,44 @@ int main(int argc, char** argv) {
       holebench::harness::write_results_csv(merge_out / "results.csv", merged.records);
       std::fprintf(stderr, "%zu records from %zu files into %s\n", merged.records.size(),
                    sets.size(), (merge_out / "results.json").c_str());
+      return 0;
+    }
+    if (slurm_submit->parsed()) {
+      if (submit_no_snapshots)
+        submit_options.run_arguments.push_back("--no-snapshots");
+      if (submit_workers > 0) {
+        submit_options.run_arguments.insert(submit_options.run_arguments.end(),
+                                            {"--workers", std::to_string(submit_workers)});
+      }
+      if (submit_timeout >= 0.0) {
+        submit_options.run_arguments.insert(submit_options.run_arguments.end(),
+                                            {"--timeout", fmt::format("{}", submit_timeout)});
+      }
+      submit_options.only = shard_indices(submit_only);
+      const auto result = holebench::harness::submit_shards(submit_options);
+      print_submission(result, submit_options.out_dir);
+      return 0;
+    }
+    if (slurm_status->parsed()) {
+      const auto report = holebench::harness::shard_status(slurm_status_dir);
+      fmt::print("{}", holebench::harness::format_shard_status(report));
+      return report.all_complete() ? 0 : 1;
+    }
+    if (slurm_resubmit->parsed()) {
+      resubmit_options.only = shard_indices(resubmit_only);
+      const auto result = holebench::harness::resubmit_shards(resubmit_options);
+      if (result.shards.empty()) {
+        fmt::print(
+            "Every shard is complete: nothing to resubmit. Merge with: holebench merge "
+            "--shards {}\n",
+            resubmit_options.dir.string());
+        return 0;
+      }
+      std::string names;
+      for (auto index : result.shards)
+        names += (names.empty() ? "" : ", ") + holebench::harness::shard_folder_name(index);
+      fmt::print("Resubmitting {}\n", names);
+      print_submission(result, resubmit_options.dir);
       return 0;
     }
     if (compare->parsed()) {

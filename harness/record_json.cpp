@@ -43,6 +43,8 @@ nlohmann::ordered_json context_to_json(const RunContext& context) {
   j["host"] = context.host;
   j["created_utc"] = context.created_utc;
   j["suite"] = context.suite;
+  if (!context.shard.empty())
+    j["shard"] = context.shard;
   nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
   for (const auto& [name, version] : context.libraries)
     libraries[name] = version;
@@ -58,6 +60,7 @@ RunContext context_from_json(const nlohmann::json& j) {
   context.host = value_or<std::string>(j, "host", "");
   context.created_utc = value_or<std::string>(j, "created_utc", "");
   context.suite = value_or<std::string>(j, "suite", "");
+  context.shard = value_or<std::string>(j, "shard", "");
   if (j.contains("libraries") && j["libraries"].is_object()) {
     for (const auto& [name, version] : j["libraries"].items()) {
       context.libraries.emplace_back(

@@ -55,15 +55,19 @@ RunOptions run_options_from_suite(const Suite& suite) {
   return options;
 }
 
-RunSummary run_jobs(const RunOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+generators::CatalogOptions run_catalog_options(const RunOptions& options) {
   generators::CatalogOptions catalog_options = options.catalog;
   if (catalog_options.families.empty()) {
     catalog_options.families = families_of_patterns(
         options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
   }
-  const generators::CaseCatalog catalog(catalog_options);
-  const std::vector<Job> jobs = plan_jobs(options, catalog);
+  return catalog_options;
+}
+
+RunSummary run_jobs(const RunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const generators::CaseCatalog catalog(run_catalog_options(options));
+  const std::vector<Job> jobs = jobs_of_shard(plan_jobs(options, catalog), options.shard);
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;
   job_options.catalog = &catalog;
@@ -93,7 +97,10 @@ RunSummary run_jobs(const RunOptions& options) {
   }
   summary.results_json = options.out_dir / "results.json";
   summary.results_csv = options.out_dir / "results.csv";
-  write_results_json(summary.results_json, current_context(options.suite_name), summary.records);
+  RunContext context = current_context(options.suite_name);
+  if (options.shard.count > 1)
+    context.shard = to_string(options.shard);
+  write_results_json(summary.results_json, context, summary.records);
   write_results_csv(summary.results_csv, summary.records);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

@@ -3,6 +3,7 @@
 
 #include "harness/job.h"
 #include "harness/runner.h"
+#include "harness/shard.h"
 #include "harness/suite.h"
 
 #include <filesystem>
@@ -24,6 +25,8 @@ struct RunOptions {
   EvaluationOptions evaluation;
   std::string suite_name = "ad hoc";  ///< written into the results' context
   RunnerOptions runner;               ///< workers, timeout, resume, progress
+  /// The slice of the jobs to run (harness/shard.h); the default, 0/1, is every job.
+  ShardSpec shard;
   /// Run each job in this process instead of a child process (tests; no isolation).
   bool in_process = false;
 };
@@ -43,8 +46,12 @@ struct RunSummary {
 /// Throws std::invalid_argument for an unknown case or method id.
 std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog);
 
-/// Runs the jobs (isolated, in parallel: harness/runner.h) and writes records.jsonl (as jobs
-/// finish), results.json, results.csv and snapshots/ into `options.out_dir`.
+/// The catalog options `run_jobs` builds its catalog with: `options.catalog`, limited to the
+/// families of the case patterns.
+generators::CatalogOptions run_catalog_options(const RunOptions& options);
+
+/// Runs the jobs of `options.shard` (isolated, in parallel: harness/runner.h) and writes
+/// records.jsonl (as jobs finish), results.json, results.csv and snapshots/ into `options.out_dir`.
 RunSummary run_jobs(const RunOptions& options);
 
 }  // namespace holebench::harness

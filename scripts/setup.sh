@@ -22,6 +22,8 @@ packages=(
   python3 python3-matplotlib
   # formatting of the sources
   clang-format
+  # the cluster workflow's test on a throwaway single-node Slurm (tests/slurm/)
+  slurmctld slurmd slurm-client munge
 )
 
 if [ "$(id -u)" -ne 0 ]; then
