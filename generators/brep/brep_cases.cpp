@@ -596,6 +596,35 @@ std::vector<Recipe> make_recipes() {
       "the face of the beam's raised bar above the beam top kept (reflex corner of the beam's "
       "cross-section)"));
 
+  // Outer holes on three inner boundaries: three thin frames through one corner V, each
+  // with a tongue reaching into its window, the tongues meeting at V; each frame crosses the
+  // other two planes only in their windows or beyond their borders. The same three faces with
+  // the material behind or in front of them give the convex and the reflex signatures.
+  r.push_back(removal(
+      "k3/outer/convex-convex-convex/inner-inner-inner", "faces",
+      "k3/outer/convex-convex-convex/inner-inner-inner",
+      [] { return make_corner_frames_model(false); }, {{-2, -2, 0}, {0, -2, -2}, {-2, 0, -2}}, true,
+      "three thin frames through a convex corner, each with a tongue into its window, the "
+      "tongues meeting at the corner: only the three faces at the corner kept"));
+  r.push_back(removal(
+      "k3/outer/convex-convex-reflex/inner-inner-inner", "faces",
+      "k3/outer/convex-convex-reflex/inner-inner-inner",
+      [] { return make_notch_frames_model(false); }, {{-2, -2, 0}, {0, 2, -2}, {2, 0, -2}}, true,
+      "three thin frames through a notch's outer corner (an L-shaped tongue and two square "
+      "tongues): only the three faces at the corner kept"));
+  r.push_back(removal(
+      "k3/outer/convex-reflex-reflex/inner-inner-inner", "faces",
+      "k3/outer/convex-reflex-reflex/inner-inner-inner",
+      [] { return make_notch_frames_model(true); }, {{-2, -2, 0}, {0, 2, -2}, {2, 0, -2}}, true,
+      "three thin frames through a notch's corner, the material in front of the faces (an "
+      "L-shaped tongue and two square tongues): only the three faces at the corner kept"));
+  r.push_back(removal(
+      "k3/outer/reflex-reflex-reflex/inner-inner-inner", "faces",
+      "k3/outer/reflex-reflex-reflex/inner-inner-inner",
+      [] { return make_corner_frames_model(true); }, {{-2, -2, 0}, {0, -2, -2}, {-2, 0, -2}}, true,
+      "three thin frames through a reflex corner (the material in front of the faces), each "
+      "with a tongue into its window: only the three faces at the corner kept"));
+
   // Variants.
   r.push_back(removal(
       "weak/multiple-inner-boundaries", "faces", "k2/outer/convex/inner-inner",

@@ -35,6 +35,22 @@ Polyhedron make_tunnel_rib_model();
 /// its top flush with the plate top, bar [6,7] x [1,4] x [2,4]) spans from the pocket's
 /// front rim to the rib front, whose inner loop is the beam's cross-section.
 Polyhedron make_beam_rib_model();
+/// Three thin frames through one corner V = (0, 0, 0), in the planes z = 0 (face A), x = 0
+/// (face B) and y = 0 (face C): each a plate one unit thick with a window and a tongue
+/// reaching into the window, the three tongues meeting at V in the corner of a cube, so that
+/// V lies on an inner loop of all three faces. Each frame crosses the other two planes only
+/// in their windows or beyond their outer borders (here once each: the frames are pairwise
+/// linked like chain links), so A, B and C meet pairwise only along the tongues' edges at V.
+/// The plates lie behind the faces (`reflex` false: V is a convex corner, all three edges
+/// convex) or in front of them (the same three faces with the material on their other side:
+/// all three edges reflex). Genus 3.
+Polyhedron make_corner_frames_model(bool reflex);
+/// Like make_corner_frames_model, but A's tongue is L-shaped with its inner corner at V (a
+/// 270 degree sector) and B and C have square tongues; A passes twice through the windows of
+/// B and C, which pass beyond A's outer border. With the plates behind the faces the edges
+/// at V are convex (A-B, A-C) and reflex (B-C), in front of them reflex, reflex and convex.
+/// Genus 3.
+Polyhedron make_notch_frames_model(bool reflex);
 /// A block half over a pocket: the plate top meets the vertical face in front twice along
 /// one line, once reflex (at the block) and once convex (at the pocket's rim).
 Polyhedron make_twisted_model();

@@ -272,7 +272,11 @@ TEST(BrepGuidance, NoUserAgreesAndTheRecordCountsRefusals) {
 //    transition's convexity (and for k = 3, through equation 2, the orientation).
 // The expected outcome pinned down here: k is right everywhere; the convexities or the
 // orientation are wrong, except on the reflex inner-inner k = 2 hole (a bridge over an
-// opening), which figure 3 and equation 1 happen to read right. See docs/methods.md.
+// opening), which figure 3 and equation 1 happen to read right, and on the inner-inner-inner
+// k = 3 holes (three thin frames through a corner): there both faces' hole half-edges leave
+// the common line at right angles at every transition (the tongues' corners), so figure 3
+// sees each face on its true side and equation 2 follows; only equation 4's direction (all
+// a_i = +1) is left of the weak spot. See docs/methods.md.
 TEST(BrepGuidance, WeakSpotsAreMisreadAsTheDocsSay) {
   int checked = 0;
   for (const auto& descriptor : brep_cases()) {
@@ -292,7 +296,8 @@ TEST(BrepGuidance, WeakSpotsAreMisreadAsTheDocsSay) {
       align(regions, truth.labels->regions, transitions);
       const bool convexity_wrong = transitions != truth.labels->transitions;
       const bool orientation_wrong = got.orientation != truth.labels->orientation;
-      const bool read_right = descriptor.id.rfind("brep/k2/outer/reflex/inner-inner/", 0) == 0;
+      const bool read_right = descriptor.id.rfind("brep/k2/outer/reflex/inner-inner/", 0) == 0 ||
+                              descriptor.id.find("/inner-inner-inner/") != std::string::npos;
       EXPECT_EQ(convexity_wrong || orientation_wrong, !read_right);
       if (truth.labels->known_weak_spot == "twisted_face") {
         EXPECT_TRUE(convexity_wrong);
@@ -301,7 +306,7 @@ TEST(BrepGuidance, WeakSpotsAreMisreadAsTheDocsSay) {
       ++checked;
     }
   }
-  EXPECT_GE(checked, 14);  // the twisted face, the multiple-inner-boundary cases, 2 sizes each
+  EXPECT_GE(checked, 22);  // the twisted face, the multiple-inner-boundary cases, 2 sizes each
 }
 
 }  // namespace

@@ -30,14 +30,22 @@ std::vector<NamedModel> closed_models() {
           {"bridge", make_bridge_model},
           {"tunnel_rib", make_tunnel_rib_model},
           {"beam_rib", make_beam_rib_model},
+          {"corner_frames", [] { return make_corner_frames_model(false); }},
+          {"corner_frames_reflex", [] { return make_corner_frames_model(true); }},
+          {"notch_frames", [] { return make_notch_frames_model(false); }},
+          {"notch_frames_reflex", [] { return make_notch_frames_model(true); }},
           {"twisted", make_twisted_model},
           {"triangular_prism", make_triangular_prism_model},
           {"pyramid5", [] { return make_pyramid_model(5); }}};
 }
 
 // Closed solids of genus 0 have chi = 2; the tunnel, the bridge and the two rib models (a
-// tunnel through the rib, a beam from the pocket rim to the rib) have genus 1: chi = 0.
+// tunnel through the rib, a beam from the pocket rim to the rib) have genus 1: chi = 0; the
+// frame models (three frames joined at their tongues: a thickened sphere with four holes)
+// have genus 3: chi = -4.
 int expected_euler(const std::string& name) {
+  if (name.rfind("corner_frames", 0) == 0 || name.rfind("notch_frames", 0) == 0)
+    return -4;
   return name == "tunnel" || name == "bridge" || name == "tunnel_rib" || name == "beam_rib" ? 0 : 2;
 }
 
