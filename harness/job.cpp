@@ -57,6 +57,12 @@ void copy_holes(const MethodResult& result, JobRecord& record) {
   }
 }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 }  // namespace
 
 JobRecord run_job(const Job& job, const JobOptions& options) {
@@ -64,11 +70,13 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
   record.job = job;
   Case c;
   try {
+    const auto start = Clock::now();
     seed_cgal_default_random();
     c = options.catalog ? options.catalog->make(job.case_id, job.seed, job.noise_percent)
                         : generators::make_case(job.case_id, job.seed, job.noise_percent);
     record.case_family = c.family;
     record.case_kind = c.kind;
+    record.stages.push_back({"case", seconds_since(start)});
   } catch (const std::exception& e) {
     record.status = JobStatus::InvalidInput;
     record.message = e.what();
@@ -79,13 +87,13 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     const auto method = make_method(job.method_id);
     const std::unique_ptr<User> user = make_user(job.user, c);
     record.user = user->kind();
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     MethodParameters parameters;
     parameters.structure_size = c.parameters.structure_size;
     seed_cgal_default_random();
     MethodResult result = method->run(c.input, parameters, *user);
-    record.method_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.method_seconds = seconds_since(start);
+    record.stages.push_back({"method", record.method_seconds});
     record.user_interventions = user->interventions();
     record.phases = result.phases;
     copy_holes(result, record);
@@ -95,7 +103,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
       return record;
     }
     record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
+    const auto evaluation_start = Clock::now();
     record.metrics = evaluate(c, result, options.evaluation).values;
+    record.stages.push_back({"evaluation", seconds_since(evaluation_start)});
     record.metrics.push_back({"time_method_s", record.method_seconds});
     if (!options.snapshot_dir.empty()) {
       std::string name = job.id();
@@ -104,7 +114,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
           ch = '_';
       }
       const auto path = options.snapshot_dir / (name + ".png");
+      const auto snapshot_start = Clock::now();
       render::write_png(render::job_snapshot(c, result), path);
+      record.stages.push_back({"snapshot", seconds_since(snapshot_start)});
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
     }
   } catch (const InvalidInputError& e) {

@@ -58,6 +58,8 @@ struct JobRecord {
   std::vector<PhaseTiming> phases;
   std::vector<HoleRecord> holes;
   double method_seconds = 0.0;
+  /// Wall time of the job's stages: "case" (generation), "method", "evaluation", "snapshot".
+  std::vector<PhaseTiming> stages;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
 };
 

@@ -136,6 +136,10 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
     phases[phase.phase] = phase.seconds;
   j["phases_s"] = phases;
   j["method_seconds"] = record.method_seconds;
+  nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+  for (const auto& stage : record.stages)
+    stages[stage.phase] = stage.seconds;
+  j["stages_s"] = stages;
   nlohmann::ordered_json holes = nlohmann::ordered_json::array();
   for (const auto& hole : record.holes) {
     nlohmann::ordered_json h = {{"hole_index", hole.hole_index},
@@ -186,6 +190,12 @@ JobRecord record_from_json(const nlohmann::json& j) {
     }
   }
   record.method_seconds = value_or(j, "method_seconds", 0.0);
+  if (j.contains("stages_s") && j["stages_s"].is_object()) {
+    for (const auto& [name, value] : j["stages_s"].items()) {
+      if (value.is_number())
+        record.stages.push_back({name, value.get<double>()});
+    }
+  }
   if (j.contains("holes") && j["holes"].is_array()) {
     for (const auto& h : j["holes"]) {
       HoleRecord hole;

@@ -205,6 +205,7 @@ def records(path):
     for r in data["results"]:
         r = dict(r)
         r.pop("method_seconds", None)
+        r.pop("stages_s", None)
         r.pop("phases_s", None)
         r.pop("snapshot", None)
         r["metrics"] = {k: v for k, v in r.get("metrics", {}).items() if not k.startswith("time_")}
