@@ -3,6 +3,9 @@
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -46,6 +49,7 @@ class DirectedSearch {
     }
     for (double d : vertices->distance)
       result_.lower = std::max(result_.lower, d);
+    std::vector<Cell> initial;
     for (auto f : a.faces()) {
       if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
         continue;  // lies on B: distance zero everywhere
@@ -57,8 +61,18 @@ class DirectedSearch {
         cell.corner_face[k] = vertices->nearest_face[v.idx()];
         ++k;
       }
-      push(std::move(cell));
+      initial.push_back(std::move(cell));
     }
+    // The first cells' queries in parallel, queued in face order (the same queue, and so
+    // the same result, whatever the number of threads).
+    std::vector<Bound> bounds(initial.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
+                      [&](const auto& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i)
+                          bounds[i] = bound_of(initial[i]);
+                      });
+    for (std::size_t i = 0; i < initial.size(); ++i)
+      enqueue(std::move(initial[i]), bounds[i]);
     while (!queue_.empty()) {
       if (queue_.top().upper <= result_.lower + options_.error_bound)
         break;
@@ -95,14 +109,21 @@ class DirectedSearch {
     return bound;
   }
 
-  void push(Cell cell) {
+  // The cell's upper bound and the distance found at its centroid: one query, no shared
+  // state (the first cells are bounded in parallel).
+  struct Bound {
+    double upper = 0.0;
+    double centroid_distance = 0.0;
+  };
+
+  Bound bound_of(const Cell& cell) const {
     const auto& c = cell.corners;
     const auto& d = cell.corner_distance;
     const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
     const double centroid_bound =
         std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
                   d[2] + (centroid - c[2]).norm()});
-    const auto nearest = query(centroid, centroid_bound);
+    const auto nearest = scene_.closest_point(centroid, centroid_bound);
     // Bound (i): the distance to one triangle of B is convex, so its maximum over the
     // cell is at a corner. Candidates: the triangles nearest to the centroid and to the
     // corners.
@@ -119,10 +140,18 @@ class DirectedSearch {
     const double longest = std::sqrt(
         std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
     const double bound_lipschitz = largest_corner + longest * 0.57735026919;
-    cell.upper = std::min(bound_single, bound_lipschitz);
+    return {std::min(bound_single, bound_lipschitz), nearest.distance};
+  }
+
+  void enqueue(Cell cell, const Bound& bound) {
+    ++result_.queries;
+    result_.lower = std::max(result_.lower, bound.centroid_distance);
+    cell.upper = bound.upper;
     cell.order = next_order_++;
     queue_.push(std::move(cell));
   }
+
+  void push(Cell cell) { enqueue(cell, bound_of(cell)); }
 
   void split(const Cell& cell) {
     const auto& c = cell.corners;

@@ -3,6 +3,9 @@
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -157,9 +160,15 @@ class MeanSearch {
       total_area_ += cell.area;
       if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
         continue;  // lies on B: contributes zero, exactly
-      bound(cell);
       initial.push_back(std::move(cell));
     }
+    // The first cells' bounds in parallel (one query each, no shared state); queued below
+    // in face order, so the result does not depend on the number of threads.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
+                      [&](const auto& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i)
+                          bound(initial[i]);
+                      });
     if (total_area_ <= 0.0)
       return result_;
     // The RMS error is about the mean-square error / (2 RMS): the scale that weighs the
@@ -219,6 +228,7 @@ class MeanSearch {
   void remove_sums(const Cell& cell) { add_sums(cell, -1.0); }
 
   void enqueue(Cell cell) {
+    ++result_.queries;  // the one closest-point query of bound()
     cell.key = cell.area * ((cell.mean_hi - cell.mean_lo) +
                             (cell.square_hi - cell.square_lo) / (2.0 * rms_scale_));
     cell.order = next_order_++;
@@ -237,7 +247,7 @@ class MeanSearch {
 
   // Bounds of d over the cell, pointwise (first order) and of its mean and mean square
   // (second order).
-  void bound(Cell& cell) {
+  void bound(Cell& cell) const {
     const auto& c = cell.corners;
     const auto& d = cell.corner_distance;
     const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
@@ -250,9 +260,9 @@ class MeanSearch {
     double centroid_radius = 0.0;
     for (const Point& corner : c)
       centroid_radius = std::max(centroid_radius, (corner - centroid).norm());
-    const auto nearest =
-        query(centroid, std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
-                                  d[2] + (centroid - c[2]).norm()}));
+    const auto nearest = scene_.closest_point(
+        centroid, std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
+                            d[2] + (centroid - c[2]).norm()}));
 
     // First order, pointwise: 1-Lipschitz from the centroid and the corners.
     double lo = std::max(0.0, nearest.distance - centroid_radius);

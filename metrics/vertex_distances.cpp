@@ -2,7 +2,11 @@
 
 #include "metrics/embree/triangle_scene.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <limits>
 
 namespace holebench {
@@ -24,20 +28,38 @@ VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_s
       }
     }
   }
-  for (auto v : a.vertices()) {
-    if (result.distance[v.idx()] != kUnknown)
-      continue;
-    double bound = std::numeric_limits<double>::infinity();
-    for (auto u : a.vv_range(v)) {
-      const double du = result.distance[u.idx()];
-      if (du != kUnknown)
-        bound = std::min(bound, du + (a.point(v) - a.point(u)).norm());
+  // Blocks of consecutive vertices in parallel; inside a block, in index order, each query
+  // bounded through the neighbours done before it in the same block (or known to be on B)
+  // so that no block reads what another one writes. The answers do not depend on the
+  // bounds, so the result is the same whatever the number of threads.
+  const std::vector<double> known = result.distance;
+  constexpr std::size_t kBlock = 2048;
+  const std::size_t blocks = (a.n_vertices() + kBlock - 1) / kBlock;
+  std::atomic<std::size_t> queries{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const auto& range) {
+    for (std::size_t block = range.begin(); block != range.end(); ++block) {
+      const std::size_t first = block * kBlock, last = std::min(first + kBlock, a.n_vertices());
+      std::size_t count = 0;
+      for (std::size_t i = first; i < last; ++i) {
+        if (known[i] != kUnknown)
+          continue;
+        const auto v = a.vertex_handle(static_cast<int>(i));
+        double bound = std::numeric_limits<double>::infinity();
+        for (auto u : a.vv_range(v)) {
+          const std::size_t j = static_cast<std::size_t>(u.idx());
+          const bool done = known[j] != kUnknown || (j >= first && j < i);
+          if (done)
+            bound = std::min(bound, result.distance[j] + (a.point(v) - a.point(u)).norm());
+        }
+        const auto closest = b_scene.closest_point(a.point(v), bound);
+        ++count;
+        result.distance[i] = closest.distance;
+        result.nearest_face[i] = closest.face;
+      }
+      queries += count;
     }
-    const auto closest = b_scene.closest_point(a.point(v), bound);
-    ++result.queries;
-    result.distance[v.idx()] = closest.distance;
-    result.nearest_face[v.idx()] = closest.face;
-  }
+  });
+  result.queries = queries;
   return result;
 }
 

@@ -101,7 +101,10 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
       for (const Point& p : points)
         polyline.emplace_back(p[0], p[1], p[2]);
       std::vector<CGAL::Triple<int, int, int>> patch;
-      PMP::triangulate_hole_polyline(polyline, std::back_inserter(patch));
+      // Without CGAL's 3D Delaunay restriction: on regular boundaries it depends on memory
+      // addresses, and the same job would give different patches (docs/methods.md).
+      PMP::triangulate_hole_polyline(polyline, std::back_inserter(patch),
+                                     CGAL::parameters::use_delaunay_triangulation(false));
       if (!patch.empty()) {
         triangulation.triangles.clear();
         for (const auto& t : patch)
@@ -181,7 +184,8 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
 
 std::size_t fill_hole_without_features(Mesh& mesh, HalfedgeHandle border) {
   std::vector<FaceHandle> faces;
-  PMP::triangulate_hole(mesh, border, std::back_inserter(faces));
+  PMP::triangulate_hole(mesh, border, std::back_inserter(faces),
+                        CGAL::parameters::use_delaunay_triangulation(false));
   return faces.size();
 }
 
