@@ -66,10 +66,11 @@ class DirectedSearch {
     // The first cells' queries in parallel, queued in face order (the same queue, and so
     // the same result, whatever the number of threads).
     std::vector<Bound> bounds(initial.size());
+    const double settled_now = settled();  // from the vertices: only grows afterwards
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
                       [&](const auto& range) {
                         for (std::size_t i = range.begin(); i != range.end(); ++i)
-                          bounds[i] = bound_of(initial[i]);
+                          bounds[i] = bound_of(initial[i], settled_now);
                       });
     for (std::size_t i = 0; i < initial.size(); ++i)
       enqueue(std::move(initial[i]), bounds[i]);
@@ -109,49 +110,61 @@ class DirectedSearch {
     return bound;
   }
 
-  // The cell's upper bound and the distance found at its centroid: one query, no shared
-  // state (the first cells are bounded in parallel).
+  // The cell's upper bound and the distance found at its centroid: at most one query, no
+  // shared state (the first cells are bounded in parallel). `settled`: a cell whose upper
+  // bound is at most this needs no more work (it will never be split), so the centroid
+  // query is skipped when a corner's nearest triangle already gives such a bound.
   struct Bound {
     double upper = 0.0;
     double centroid_distance = 0.0;
+    bool queried = false;
   };
 
-  Bound bound_of(const Cell& cell) const {
+  Bound bound_of(const Cell& cell, double settled) const {
     const auto& c = cell.corners;
     const auto& d = cell.corner_distance;
+    const double largest_corner = *std::max_element(d.begin(), d.end());
+    // Bound (ii): every point lies within longest edge / sqrt(3) of a corner (the
+    // equilateral triangle is the worst case), and the distance is 1-Lipschitz.
+    const double longest = std::sqrt(
+        std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
+    Bound bound;
+    bound.upper = largest_corner + longest * 0.57735026919;
+    // Bound (i): the distance to one triangle of B is convex, so its maximum over the
+    // cell is at a corner. Candidates: the triangles nearest to the corners, then to the
+    // centroid.
+    for (int i = 0; i < 3; ++i) {
+      const int face = cell.corner_face[i];
+      if (face >= 0 && (i == 0 || face != cell.corner_face[i - 1]))
+        bound.upper = std::min(bound.upper, single_triangle_bound(c, face));
+    }
+    if (bound.upper <= settled)
+      return bound;
     const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
     const double centroid_bound =
         std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
                   d[2] + (centroid - c[2]).norm()});
     const auto nearest = scene_.closest_point(centroid, centroid_bound);
-    // Bound (i): the distance to one triangle of B is convex, so its maximum over the
-    // cell is at a corner. Candidates: the triangles nearest to the centroid and to the
-    // corners.
-    double bound_single = nearest.face >= 0 ? single_triangle_bound(c, nearest.face)
-                                            : std::numeric_limits<double>::infinity();
-    const double largest_corner = *std::max_element(d.begin(), d.end());
-    for (int i = 0; i < 3 && bound_single > largest_corner; ++i) {
-      const int face = cell.corner_face[i];
-      if (face >= 0 && face != nearest.face)
-        bound_single = std::min(bound_single, single_triangle_bound(c, face));
-    }
-    // Bound (ii): every point lies within longest edge / sqrt(3) of a corner (the
-    // equilateral triangle is the worst case), and the distance is 1-Lipschitz.
-    const double longest = std::sqrt(
-        std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
-    const double bound_lipschitz = largest_corner + longest * 0.57735026919;
-    return {std::min(bound_single, bound_lipschitz), nearest.distance};
+    bound.queried = true;
+    bound.centroid_distance = nearest.distance;
+    if (nearest.face >= 0 && bound.upper > largest_corner)
+      bound.upper = std::min(bound.upper, single_triangle_bound(c, nearest.face));
+    return bound;
   }
 
+  double settled() const { return result_.lower + options_.error_bound; }
+
   void enqueue(Cell cell, const Bound& bound) {
-    ++result_.queries;
-    result_.lower = std::max(result_.lower, bound.centroid_distance);
+    if (bound.queried) {
+      ++result_.queries;
+      result_.lower = std::max(result_.lower, bound.centroid_distance);
+    }
     cell.upper = bound.upper;
     cell.order = next_order_++;
     queue_.push(std::move(cell));
   }
 
-  void push(Cell cell) { enqueue(cell, bound_of(cell)); }
+  void push(Cell cell) { enqueue(cell, bound_of(cell, settled())); }
 
   void split(const Cell& cell) {
     const auto& c = cell.corners;
