@@ -285,15 +285,17 @@ class MeanSearch {
       square_hi = std::min(square_hi, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / 3.0);
     }
     // The exact minimum over the cell where the cell may touch B (there the distance has
-    // a kink that no smooth bound follows): its distance to the triangles of B that can
-    // hold the closest point of some point of the cell (within hi + centroid_radius of the
-    // centroid). Only where the gap matters: w <= bound / 4 contributes little.
-    if (0.5 * (hi - lo) > 0.25 * options_.error_bound && lo < centroid_radius) {
-      double minimum = std::numeric_limits<double>::infinity();
-      for (int face : scene_.faces_within(centroid, hi + centroid_radius))
+    // a kink that no smooth bound follows): its distance to the triangles of B within
+    // a + centroid_radius of the centroid, a = the smallest distance sampled on the cell
+    // (the minimum is at most a, so farther triangles cannot hold it). Only where it can
+    // matter: the gap w > bound / 4 and the minimum able to raise lo by more than that.
+    const double sampled = std::min({d[0], d[1], d[2], nearest.distance});
+    const double useful = 0.25 * options_.error_bound;
+    if (0.5 * (hi - lo) > useful && sampled - lo > useful && lo < centroid_radius) {
+      double minimum = sampled;
+      for (int face : scene_.faces_within(centroid, sampled + centroid_radius))
         minimum = std::min(minimum, triangle_triangle_distance(c, scene_.triangle_of_face(face)));
-      if (std::isfinite(minimum))
-        lo = std::max(lo, minimum);
+      lo = std::max(lo, minimum);
     }
     hi = std::max(lo, hi);
     // Second order (semiconcavity): |x|^2 - d(x)^2 = max over y of B of (2 x.y - |y|^2) is
