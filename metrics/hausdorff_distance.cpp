@@ -5,6 +5,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <array>
@@ -50,6 +51,7 @@ class DirectedSearch {
     for (double d : vertices->distance)
       result_.lower = std::max(result_.lower, d);
     std::vector<Cell> initial;
+    initial.reserve(a.n_faces());
     for (auto f : a.faces()) {
       if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
         continue;  // lies on B: distance zero everywhere
@@ -72,8 +74,11 @@ class DirectedSearch {
                         for (std::size_t i = range.begin(); i != range.end(); ++i)
                           bounds[i] = bound_of(initial[i], settled_now);
                       });
+    // Queued all at once (one heap build, no copies): the same queue as pushing them in
+    // face order, since the order is total.
     for (std::size_t i = 0; i < initial.size(); ++i)
-      enqueue(std::move(initial[i]), bounds[i]);
+      prepare(initial[i], bounds[i]);
+    queue_ = Queue(CellOrder{}, std::move(initial));
     while (!queue_.empty()) {
       if (queue_.top().upper <= result_.lower + options_.error_bound)
         break;
@@ -154,13 +159,18 @@ class DirectedSearch {
 
   double settled() const { return result_.lower + options_.error_bound; }
 
-  void enqueue(Cell cell, const Bound& bound) {
+  // Counts the cell's centroid query and gives it its bound and creation order.
+  void prepare(Cell& cell, const Bound& bound) {
     if (bound.queried) {
       ++result_.queries;
       result_.lower = std::max(result_.lower, bound.centroid_distance);
     }
     cell.upper = bound.upper;
     cell.order = next_order_++;
+  }
+
+  void enqueue(Cell cell, const Bound& bound) {
+    prepare(cell, bound);
     queue_.push(std::move(cell));
   }
 
@@ -189,7 +199,8 @@ class DirectedSearch {
   const embree::TriangleScene& scene_;
   const HausdorffOptions& options_;
   DirectedHausdorff result_;
-  std::priority_queue<Cell, std::vector<Cell>, CellOrder> queue_;
+  using Queue = std::priority_queue<Cell, std::vector<Cell>, CellOrder>;
+  Queue queue_;
   std::size_t next_order_ = 0;
 };
 
@@ -205,17 +216,27 @@ HausdorffResult hausdorff_distance(const Mesh& a, const Mesh& b, const Hausdorff
   HausdorffResult result;
   // Each direction searches A's unshared faces against only the part of B they can reach.
   const auto directed = [&options](const Mesh& from, const Mesh& to,
-                                   const std::vector<int>& to_face_of_from) {
-    const auto reachable = faces_of_b_within_reach(from, to, to_face_of_from);
+                                   const std::vector<int>& to_face_of_from,
+                                   const std::vector<std::array<int, 3>>& from_corners,
+                                   const std::vector<std::array<int, 3>>& to_corners) {
+    const auto reachable =
+        faces_of_b_within_reach(from, to, to_face_of_from, from_corners, to_corners);
     if (reachable.empty())
       return DirectedHausdorff{};  // every face of `from` lies on `to`
-    const embree::TriangleScene scene(to, reachable);
+    // Built for this one search: the cheap build pays (SceneBuild).
+    const embree::TriangleScene scene(to, reachable, embree::SceneBuild::fast_build);
     KnownDistances known;
     known.b_face_of_a = &to_face_of_from;
     return directed_hausdorff(from, scene, options, known);
   };
-  result.a_to_b = directed(a, b, shared.b_face_of_a);
-  result.b_to_a = directed(b, a, shared.a_face_of_b);
+  // The two directions are independent: side by side (each gives the same answer alone).
+  tbb::parallel_invoke(
+      [&] {
+        result.a_to_b = directed(a, b, shared.b_face_of_a, shared.a_corners, shared.b_corners);
+      },
+      [&] {
+        result.b_to_a = directed(b, a, shared.a_face_of_b, shared.b_corners, shared.a_corners);
+      });
   return result;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/mesh.h"
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct SharedFaces {
   std::vector<int> b_face_of_a;  ///< by face index of A: the same face in B, or -1
   std::vector<int> a_face_of_b;  ///< by face index of B: the same face in A, or -1
   std::size_t count = 0;         ///< number of shared faces
+  /// The vertex indices of each face of A and of B, by face index (as matched above; the
+  /// reach below reuses them).
+  std::vector<std::array<int, 3>> a_corners, b_corners;
 };
 
 SharedFaces shared_faces(const Mesh& a, const Mesh& b);
@@ -27,5 +31,10 @@ SharedFaces shared_faces(const Mesh& a, const Mesh& b);
 /// when A shares every face; every face of B when A shares none.
 std::vector<int> faces_of_b_within_reach(const Mesh& a, const Mesh& b,
                                          const std::vector<int>& b_face_of_a);
+/// The same with the faces' vertex indices already known (SharedFaces::a_corners, b_corners).
+std::vector<int> faces_of_b_within_reach(const Mesh& a, const Mesh& b,
+                                         const std::vector<int>& b_face_of_a,
+                                         const std::vector<std::array<int, 3>>& a_corners,
+                                         const std::vector<std::array<int, 3>>& b_corners);
 
 }  // namespace holebench

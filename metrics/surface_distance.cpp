@@ -145,6 +145,7 @@ class MeanSearch {
       result_.queries += computed.queries;
     }
     std::vector<Cell> initial;
+    initial.reserve(a.n_faces());
     for (auto f : a.faces()) {
       Cell cell;
       int k = 0;
@@ -177,8 +178,11 @@ class MeanSearch {
     for (const Cell& cell : initial)
       sum_square += cell.area * 0.5 * (cell.square_lo + cell.square_hi);
     rms_scale_ = std::max(options_.error_bound, std::sqrt(sum_square / total_area_));
+    // Queued all at once (one heap build, no copies): the same queue as pushing them in
+    // face order, since the order is total.
     for (Cell& cell : initial)
-      enqueue(std::move(cell));
+      prepare(cell);
+    queue_ = Queue(CellOrder{}, std::move(initial));
     while (!queue_.empty() && !within_bound()) {
       if (result_.queries >= options_.max_queries) {
         result_.converged = false;
@@ -227,12 +231,18 @@ class MeanSearch {
   }
   void remove_sums(const Cell& cell) { add_sums(cell, -1.0); }
 
-  void enqueue(Cell cell) {
+  // Counts the cell's query of bound(), gives it its key and creation order and adds it to
+  // the running sums.
+  void prepare(Cell& cell) {
     ++result_.queries;  // the one closest-point query of bound()
     cell.key = cell.area * ((cell.mean_hi - cell.mean_lo) +
                             (cell.square_hi - cell.square_lo) / (2.0 * rms_scale_));
     cell.order = next_order_++;
     add_sums(cell, 1.0);
+  }
+
+  void enqueue(Cell cell) {
+    prepare(cell);
     queue_.push(std::move(cell));
   }
 
@@ -357,7 +367,8 @@ class MeanSearch {
   const embree::TriangleScene& scene_;
   const MeanDistanceOptions& options_;
   DirectedMeanDistance result_;
-  std::priority_queue<Cell, std::vector<Cell>, CellOrder> queue_;
+  using Queue = std::priority_queue<Cell, std::vector<Cell>, CellOrder>;
+  Queue queue_;
   std::size_t next_order_ = 0;
   double total_area_ = 0.0;
   double rms_scale_ = 0.0;

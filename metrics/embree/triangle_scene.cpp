@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+
+#include <unistd.h>
 
 namespace holebench::embree {
 
@@ -45,14 +48,33 @@ Point closest_point_on_triangle(const Point& p, const Point& a, const Point& b, 
 
 namespace {
 
-// Embree reports errors through one callback (its tutorials' pattern); the message is
-// kept and thrown from our own frame after the call, never from inside Embree.
-void remember_embree_error(void* user, RTCError code, const char* message) {
-  auto* last = static_cast<std::string*>(user);
-  *last = "Embree error " + std::to_string(code) + ": " + (message ? message : "");
+// Embree reports errors through one callback (its tutorials' pattern), on the thread that
+// made the failing call; the message is kept there and thrown from our own frame after the
+// call, never from inside Embree.
+thread_local std::string last_embree_error;
+
+void remember_embree_error(void*, RTCError code, const char* message) {
+  last_embree_error = "Embree error " + std::to_string(code) + ": " + (message ? message : "");
 }
 
-thread_local std::string last_embree_error;
+// One Embree device for the process, as Embree advises (a device per scene costs a thread
+// pool set-up and symbol lookups each time). Created on first use; a forked child (the
+// harness runs each job in one) makes its own, since the parent's threads did not follow
+// it. Never released: scenes may outlive any owner we could give it.
+RTCDevice shared_device() {
+  static std::mutex mutex;
+  static RTCDevice device = nullptr;
+  static pid_t owner = 0;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (!device || owner != getpid()) {
+    device = rtcNewDevice(nullptr);
+    if (!device)
+      throw std::runtime_error("Embree: cannot create a device");
+    rtcSetDeviceErrorFunction(device, remember_embree_error, nullptr);
+    owner = getpid();
+  }
+  return device;
+}
 
 struct PointQueryState {
   const std::vector<std::array<Point, 3>>* triangles;
@@ -127,46 +149,59 @@ std::vector<int> all_faces(const Mesh& mesh) {
 
 }  // namespace
 
-TriangleScene::TriangleScene(const Mesh& mesh) : TriangleScene(mesh, all_faces(mesh)) {}
+TriangleScene::TriangleScene(const Mesh& mesh, SceneBuild build)
+    : TriangleScene(mesh, all_faces(mesh), build) {}
 
-TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces) {
-  device_ = rtcNewDevice(nullptr);
-  if (!device_)
-    throw std::runtime_error("Embree: cannot create a device");
-  rtcSetDeviceErrorFunction(device_, remember_embree_error, &last_embree_error);
+TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces, SceneBuild build) {
+  device_ = shared_device();
+  rtcRetainDevice(device_);
+  last_embree_error.clear();
   scene_ = rtcNewScene(device_);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  // Embree 3 takes its Morton builder for low quality only in dynamic scenes.
+  const bool fast_build = build == SceneBuild::fast_build;
+  rtcSetSceneFlags(
+      scene_, fast_build ? RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_DYNAMIC : RTC_SCENE_FLAG_ROBUST);
+  if (fast_build)
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
 
-  // In increasing face order, so that the primitive order breaks ties as the face order.
-  std::vector<int> sorted_faces = faces;
-  std::sort(sorted_faces.begin(), sorted_faces.end());
-  sorted_faces.erase(std::unique(sorted_faces.begin(), sorted_faces.end()), sorted_faces.end());
-  primitive_of_face_.assign(mesh.n_faces(), -1);
-  for (int face : sorted_faces) {
-    const auto f = mesh.face_handle(face);
-    std::array<Point, 3> tri;
-    int k = 0;
-    for (auto v : mesh.fv_range(f))
-      tri[k++] = mesh.point(v);
-    primitive_of_face_[f.idx()] = static_cast<int>(triangles_.size());
-    triangles_.push_back(tri);
-    face_of_primitive_.push_back(f.idx());
+  // In increasing face order, so that the primitive order breaks ties as the face order
+  // (callers mostly pass sorted lists: then no copy is sorted).
+  std::vector<int> sorted_copy;
+  const std::vector<int>* sorted_faces = &faces;
+  if (!std::is_sorted(faces.begin(), faces.end()) ||
+      std::adjacent_find(faces.begin(), faces.end()) != faces.end()) {
+    sorted_copy = faces;
+    std::sort(sorted_copy.begin(), sorted_copy.end());
+    sorted_copy.erase(std::unique(sorted_copy.begin(), sorted_copy.end()), sorted_copy.end());
+    sorted_faces = &sorted_copy;
   }
+  const std::size_t count = sorted_faces->size();
+  primitive_of_face_.assign(mesh.n_faces(), -1);
+  triangles_.resize(count);
+  face_of_primitive_.resize(count);
 
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                               3 * triangles_.size()));
-  auto* indices = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(unsigned), triangles_.size()));
-  for (std::size_t t = 0; t < triangles_.size(); ++t) {
-    for (int c = 0; c < 3; ++c) {
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
+  const Point* points = mesh.points();
+  for (std::size_t t = 0; t < count; ++t) {
+    const int face = (*sorted_faces)[t];
+    // The corners in the face-vertex circulator's order, read straight off the halfedges.
+    auto h = mesh.halfedge_handle(mesh.face_handle(face));
+    for (int c = 0; c < 3; ++c, h = mesh.next_halfedge_handle(h)) {
+      const Point& p = points[mesh.to_vertex_handle(h).idx()];
+      triangles_[t][c] = p;
       for (int a = 0; a < 3; ++a)
-        vertices[9 * t + 3 * c + a] = static_cast<float>(triangles_[t][c][a]);
+        vertices[9 * t + 3 * c + a] = static_cast<float>(p[a]);
       indices[3 * t + c] = static_cast<unsigned>(3 * t + c);
     }
+    primitive_of_face_[face] = static_cast<int>(t);
+    face_of_primitive_[t] = face;
   }
+  if (fast_build)
+    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_LOW);
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(scene_, geometry);
   rtcReleaseGeometry(geometry);

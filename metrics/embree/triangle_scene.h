@@ -30,12 +30,21 @@ struct RayHit {
   Point normal{0.0, 0.0, 0.0};  ///< unit geometric normal of the face hit (its orientation)
 };
 
+/// How Embree builds the BVH. Answers are the same either way (closest points break ties by
+/// face index); only the time to build and to query changes.
+enum class SceneBuild {
+  fast_queries,  ///< Embree's default (binned SAH): the faster queries, for scenes queried a lot
+  fast_build,    ///< Embree's low quality (Morton codes): about 2.5x faster to build, queries
+                 ///< about 10 % slower; for scenes built for a few thousand queries
+};
+
 class TriangleScene {
  public:
-  explicit TriangleScene(const Mesh& mesh);
+  explicit TriangleScene(const Mesh& mesh, SceneBuild build = SceneBuild::fast_queries);
   /// A scene of some of the mesh's faces only (face indices of `mesh`; answers still name
   /// the mesh's face indices).
-  TriangleScene(const Mesh& mesh, const std::vector<int>& faces);
+  TriangleScene(const Mesh& mesh, const std::vector<int>& faces,
+                SceneBuild build = SceneBuild::fast_queries);
   ~TriangleScene();
   TriangleScene(const TriangleScene&) = delete;
   TriangleScene& operator=(const TriangleScene&) = delete;
