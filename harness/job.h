@@ -57,7 +57,10 @@ struct JobRecord {
   std::vector<MetricValue> metrics;
   std::vector<PhaseTiming> phases;
   std::vector<HoleRecord> holes;
+  /// Wall time of the method: the median of `method_run_seconds`.
   double method_seconds = 0.0;
+  /// Wall time of each run of the method (JobOptions::method_repetitions; one by default).
+  std::vector<double> method_run_seconds;
   /// Wall time of the job's stages: "case" (generation), "method", "evaluation", "snapshot".
   std::vector<PhaseTiming> stages;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
@@ -67,7 +70,13 @@ struct JobOptions {
   const generators::CaseCatalog* catalog = nullptr;  ///< nullptr: the default catalog
   EvaluationOptions evaluation;
   std::filesystem::path snapshot_dir;  ///< empty: no snapshot
+  /// Runs of the method per job, for steadier timings: the record's method time is their
+  /// median; the first run's result is the one evaluated (the methods are deterministic).
+  int method_repetitions = 1;
 };
+
+/// The median of `values` (the mean of the two middle ones for an even count; 0 if empty).
+double median_of(std::vector<double> values);
 
 /// Generates the case, runs the method with no user, evaluates, renders. Never throws:
 /// every failure becomes the record's status and message.

@@ -219,6 +219,11 @@ int main(int argc, char** argv) {
                   "plan order; the N shards together are the suite, each job once (e.g. 0/4)")
       ->type_name("I/N")
       ->check(parsed_by(holebench::harness::parse_shard, "I/N"));
+  int method_repetitions = 0;
+  run->add_option("--method-repetitions", method_repetitions,
+                  "Run each job's method N times and record the median wall time (the first "
+                  "run's result is evaluated; default: the suite's, 1)")
+      ->check(CLI::Range(1, 1000));
   run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
                   "Error bound of the Hausdorff distance, relative to the diagonal")
       ->capture_default_str()
@@ -415,6 +420,8 @@ int main(int argc, char** argv) {
       if (timeout >= 0.0)
         options.runner.timeout_seconds = timeout;
       options.runner.resume = resume;
+      if (method_repetitions > 0)
+        options.method_repetitions = method_repetitions;
       if (!shard_text.empty())
         options.shard = holebench::harness::parse_shard(shard_text);
       const auto summary = holebench::harness::run_jobs(options);

@@ -136,6 +136,8 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
     phases[phase.phase] = phase.seconds;
   j["phases_s"] = phases;
   j["method_seconds"] = record.method_seconds;
+  if (record.method_run_seconds.size() > 1)
+    j["method_run_seconds"] = record.method_run_seconds;
   nlohmann::ordered_json stages = nlohmann::ordered_json::object();
   for (const auto& stage : record.stages)
     stages[stage.phase] = stage.seconds;
@@ -190,6 +192,14 @@ JobRecord record_from_json(const nlohmann::json& j) {
     }
   }
   record.method_seconds = value_or(j, "method_seconds", 0.0);
+  if (j.contains("method_run_seconds") && j["method_run_seconds"].is_array()) {
+    for (const auto& value : j["method_run_seconds"]) {
+      if (value.is_number())
+        record.method_run_seconds.push_back(value.get<double>());
+    }
+  } else {
+    record.method_run_seconds.push_back(record.method_seconds);
+  }
   if (j.contains("stages_s") && j["stages_s"].is_object()) {
     for (const auto& [name, value] : j["stages_s"].items()) {
       if (value.is_number())

@@ -51,6 +51,7 @@ RunOptions run_options_from_suite(const Suite& suite) {
   options.catalog.include_cad = suite.include_cad;
   options.evaluation = suite.evaluation;
   options.runner.timeout_seconds = suite.timeout_seconds;
+  options.method_repetitions = suite.method_repetitions;
   options.suite_name = suite.name;
   return options;
 }
@@ -72,6 +73,7 @@ RunSummary run_jobs(const RunOptions& options) {
   JobOptions job_options;
   job_options.catalog = &catalog;
   job_options.evaluation = options.evaluation;
+  job_options.method_repetitions = options.method_repetitions;
   if (options.snapshots) {
     job_options.snapshot_dir = options.out_dir / "snapshots";
     std::filesystem::create_directories(job_options.snapshot_dir);

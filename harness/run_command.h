@@ -25,6 +25,7 @@ struct RunOptions {
   EvaluationOptions evaluation;
   std::string suite_name = "ad hoc";  ///< written into the results' context
   RunnerOptions runner;               ///< workers, timeout, resume, progress
+  int method_repetitions = 1;         ///< runs of the method per job (JobOptions)
   /// The slice of the jobs to run (harness/shard.h); the default, 0/1, is every job.
   ShardSpec shard;
   /// Run each job in this process instead of a child process (tests; no isolation).

@@ -68,6 +68,9 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& s
     suite.seeds = j.value("seeds", suite.seeds);
     suite.include_cad = j.value("include_cad", suite.include_cad);
     suite.timeout_seconds = j.value("timeout_s", suite.timeout_seconds);
+    suite.method_repetitions = j.value("method_repetitions", suite.method_repetitions);
+    if (suite.method_repetitions < 1)
+      throw std::invalid_argument("method_repetitions must be at least 1");
     if (j.contains("evaluation")) {
       const auto& e = j["evaluation"];
       auto& o = suite.evaluation;

@@ -39,6 +39,7 @@ struct Suite {
   std::vector<std::uint64_t> seeds{0};
   bool include_cad = true;
   double timeout_seconds = 300.0;  ///< per job
+  int method_repetitions = 1;      ///< runs of the method per job; its time is their median
   EvaluationOptions evaluation;
   Tolerances tolerances;
 };

@@ -45,6 +45,15 @@ TEST(Suite, BadSuitesAreClearErrors) {
   }
   std::ofstream(path) << "{not json";
   EXPECT_THROW(load_suite(path.string()), InvalidInputError);
+  std::ofstream(path) << "{\"cases\": [\"box/*\"], \"method_repetitions\": 0}";
+  try {
+    load_suite(path.string());
+    FAIL() << "zero method repetitions must be rejected";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("method_repetitions"), std::string::npos);
+  }
+  std::ofstream(path) << "{\"cases\": [\"box/*\"], \"method_repetitions\": 5}";
+  EXPECT_EQ(load_suite(path.string()).method_repetitions, 5);
 }
 
 }  // namespace
