@@ -1,6 +1,7 @@
 #include "harness/job.h"
 
 #include "harness/record_json.h"
+#include "tests/harness/record_lookup.h"
 
 #include <gtest/gtest.h>
 
@@ -10,23 +11,8 @@
 namespace holebench::harness {
 namespace {
 
-double metric(const JobRecord& record, const std::string& name) {
-  for (const auto& m : record.metrics) {
-    if (m.name == name)
-      return m.value;
-  }
-  ADD_FAILURE() << "no metric " << name;
-  return 0.0;
-}
-
-double stage(const JobRecord& record, const std::string& name) {
-  for (const auto& s : record.stages) {
-    if (s.phase == name)
-      return s.seconds;
-  }
-  ADD_FAILURE() << "no stage " << name;
-  return 0.0;
-}
+using test_support::metric;
+using test_support::stage;
 
 TEST(Job, MedianOfOddAndEvenCounts) {
   EXPECT_EQ(median_of({3.0, 1.0, 2.0}), 2.0);

@@ -1,5 +1,6 @@
 // The walking skeleton end to end: cases -> liepa_cgal -> metrics -> results and PNGs.
 #include "harness/run_command.h"
+#include "tests/harness/record_lookup.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,14 +17,7 @@ std::filesystem::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-double metric(const JobRecord& record, const std::string& name) {
-  for (const auto& m : record.metrics) {
-    if (m.name == name)
-      return m.value;
-  }
-  ADD_FAILURE() << "no metric " << name << " in " << record.job.id();
-  return -1.0;
-}
+using test_support::metric;
 
 TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
   RunOptions options;
