@@ -100,7 +100,7 @@ MetricChange judge(const std::string& name, double old_value, double new_value,
   } else {
     m.relative_change = m.change / std::fabs(old_value);
   }
-  const MetricTolerance* tolerance = tolerances.find(name);
+  const std::optional<MetricTolerance> tolerance = tolerances.find(name);
   if (!tolerance) {
     m.verdict = MetricVerdict::NotJudged;
     return m;

@@ -327,15 +327,16 @@ int main(int argc, char** argv) {
   auto* suites = app.add_subcommand("suites", "List the suites (suites/*.json)");
 
   std::filesystem::path compare_base, compare_new, junit_path;
-  std::string compare_suite = "nightly";
+  std::string compare_suite;
   auto* compare = app.add_subcommand(
       "compare", "Compare two results files job by job; exit code 1 on a regression");
   compare->add_option("base", compare_base, "Baseline results.json")
       ->required()
       ->check(CLI::ExistingFile);
   compare->add_option("new", compare_new, "New results.json")->required()->check(CLI::ExistingFile);
-  compare->add_option("--suite", compare_suite, "Suite whose tolerances judge regressions")
-      ->capture_default_str();
+  compare->add_option("--suite", compare_suite,
+                      "Suite whose tolerances judge regressions (default: the suite named in the "
+                      "new results' context; without one, the built-in defaults)");
   compare->add_option("--junit", junit_path, "Also write a JUnit XML file for CI dashboards");
 
   holebench::harness::FiguresOptions figures_options;
@@ -505,10 +506,25 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (compare->parsed()) {
-      const auto suite = holebench::harness::load_suite(compare_suite);
-      const auto comparison = holebench::harness::compare_results(
-          holebench::harness::read_results_json(compare_base),
-          holebench::harness::read_results_json(compare_new), suite.tolerances);
+      const auto base_results = holebench::harness::read_results_json(compare_base);
+      const auto new_results = holebench::harness::read_results_json(compare_new);
+      holebench::harness::Tolerances tolerances;
+      if (!compare_suite.empty()) {
+        tolerances = holebench::harness::load_suite(compare_suite).tolerances;
+      } else {
+        const auto names = holebench::harness::list_suites();
+        const std::string& named = new_results.context.suite;
+        if (std::find(names.begin(), names.end(), named) != names.end()) {
+          tolerances = holebench::harness::load_suite(named).tolerances;
+        } else {
+          fmt::print(stderr,
+                     "holebench compare: the results name no known suite ('{}'): judging by the "
+                     "built-in tolerances (give --suite NAME for a suite's)\n",
+                     named);
+        }
+      }
+      const auto comparison =
+          holebench::harness::compare_results(base_results, new_results, tolerances);
       holebench::harness::print_comparison(comparison, stdout);
       if (!junit_path.empty())
         holebench::harness::write_junit_xml(comparison, junit_path);

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,22 @@ struct Tolerances {
   /// Metrics never judged (timings vary from machine to machine).
   std::vector<std::string> ignored{"time_method_s"};
 
-  const MetricTolerance* find(const std::string& metric) const;  ///< nullptr if ignored
+  /// How `metric` is judged: its own entry if listed; nothing (not judged) if ignored or
+  /// if it only describes the case or the answer's size (`informational_metric`);
+  /// otherwise the default, in the direction its name says (`higher_is_better_metric`).
+  std::optional<MetricTolerance> find(const std::string& metric) const;
 };
+
+/// Metrics that are better higher, by name: fractions of correct answers
+/// (`*_correct_fraction`), pass/fail checks (`*_ok`, `is_*`), and the coverage and visibility
+/// fractions (`missing_edge_*_fraction`, `arrow_*visible_fraction`). Every other metric
+/// (distances, errors, angles, counts of defects, times) is better lower.
+bool higher_is_better_metric(const std::string& metric);
+
+/// Metrics that describe the case or the size of the answer, not its quality
+/// (`input_faces_count`, `new_faces_count`, `arrows_count`): not judged unless a suite lists
+/// them.
+bool informational_metric(const std::string& metric);
 
 struct Suite {
   std::string name;

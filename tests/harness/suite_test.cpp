@@ -24,13 +24,40 @@ TEST(Suite, TheShippedSuitesLoad) {
 
 TEST(Suite, TolerancesFallBackToTheDefaultAndIgnoreTimings) {
   const Suite suite = load_suite("nightly");
-  const MetricTolerance* correct = suite.tolerances.find("classification_all_correct_fraction");
-  ASSERT_NE(correct, nullptr);
+  const auto correct = suite.tolerances.find("classification_all_correct_fraction");
+  ASSERT_TRUE(correct.has_value());
   EXPECT_FALSE(correct->lower_is_better);
-  const MetricTolerance* other = suite.tolerances.find("hausdorff_rel_diag");
-  ASSERT_NE(other, nullptr);
+  const auto other = suite.tolerances.find("hausdorff_rel_diag");
+  ASSERT_TRUE(other.has_value());
   EXPECT_TRUE(other->lower_is_better);
-  EXPECT_EQ(suite.tolerances.find("time_method_s"), nullptr);
+  EXPECT_FALSE(suite.tolerances.find("time_method_s").has_value());
+}
+
+// A suite without tolerances (paper, default) still judges each metric the right way round.
+TEST(Suite, UnlistedMetricsAreJudgedInTheDirectionTheirNameSays) {
+  const Tolerances none;
+  for (const char* higher :
+       {"classification_k_correct_fraction", "is_closed", "original_faces_unchanged_ok",
+        "missing_edge_present_fraction", "missing_edge_covered_fraction", "arrow_visible_fraction",
+        "arrow_best_visible_fraction", "distance_converged_ok"}) {
+    const auto tolerance = none.find(higher);
+    ASSERT_TRUE(tolerance.has_value()) << higher;
+    EXPECT_FALSE(tolerance->lower_is_better) << higher;
+  }
+  for (const char* lower :
+       {"hausdorff_rel_diag", "hole_mean_distance_rel_diag", "missing_corner_error_max_rel_diag",
+        "arrow_direction_error_deg", "self_intersections_count", "open_boundary_loops_count",
+        "new_degenerate_faces_count", "patch_normal_deviation_mean_deg"}) {
+    const auto tolerance = none.find(lower);
+    ASSERT_TRUE(tolerance.has_value()) << lower;
+    EXPECT_TRUE(tolerance->lower_is_better) << lower;
+  }
+  for (const char* size : {"input_faces_count", "new_faces_count", "arrows_count"})
+    EXPECT_FALSE(none.find(size).has_value()) << size;
+  // A suite's own entry wins over the name.
+  Tolerances listed;
+  listed.metrics["new_faces_count"] = MetricTolerance{true, 0.1, 1.0};
+  ASSERT_TRUE(listed.find("new_faces_count").has_value());
 }
 
 TEST(Suite, BadSuitesAreClearErrors) {
