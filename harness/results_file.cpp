@@ -48,11 +48,22 @@ RunContext current_context(const std::string& suite) {
 
 namespace {
 
-std::ofstream open_for_writing(const std::filesystem::path& path) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out)
-    throw std::runtime_error("cannot write " + path.string());
-  return out;
+// Writes through a temporary file beside `path`, renamed over it once complete: a reader
+// (a report, a shard's status check) never sees a half-written file, even when the process
+// is killed while writing.
+template <typename Write>
+void write_atomically(const std::filesystem::path& path, Write write) {
+  const std::filesystem::path temporary = path.string() + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    if (!out)
+      throw std::runtime_error("cannot write " + path.string());
+    write(out);
+    out.flush();
+    if (!out)
+      throw std::runtime_error("cannot write " + path.string());
+  }
+  std::filesystem::rename(temporary, path);
 }
 
 std::string csv_field(const std::string& text) {
@@ -76,31 +87,27 @@ void write_results_json(const std::filesystem::path& path, const RunContext& con
   j["results"] = nlohmann::ordered_json::array();
   for (const auto& record : records)
     j["results"].push_back(record_to_json(record));
-  auto out = open_for_writing(path);
-  out << j.dump(2) << '\n';
-  if (!out)
-    throw std::runtime_error("cannot write " + path.string());
+  write_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
 void write_results_csv(const std::filesystem::path& path, const std::vector<JobRecord>& records) {
-  auto out = open_for_writing(path);
-  out << "job_id,case_id,method,user,seed,case_family,case_kind,noise_percent,status,metric,"
-         "value\n";
-  for (const auto& record : records) {
-    const std::string prefix = fmt::format(
-        "{},{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
-        csv_field(record.job.method_id), csv_field(record.job.user), record.job.seed,
-        csv_field(record.case_family), csv_field(record.case_kind), record.job.noise_percent,
-        to_string(record.status));
-    if (record.metrics.empty())
-      out << prefix << ",,\n";
-    // fmt's "{}" is the shortest text that reads back to the same double.
-    for (const auto& metric : record.metrics) {
-      out << prefix << ',' << metric.name << ',' << fmt::format("{}", metric.value) << '\n';
+  write_atomically(path, [&records](std::ostream& out) {
+    out << "job_id,case_id,method,user,seed,case_family,case_kind,noise_percent,status,metric,"
+           "value\n";
+    for (const auto& record : records) {
+      const std::string prefix = fmt::format(
+          "{},{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
+          csv_field(record.job.method_id), csv_field(record.job.user), record.job.seed,
+          csv_field(record.case_family), csv_field(record.case_kind), record.job.noise_percent,
+          to_string(record.status));
+      if (record.metrics.empty())
+        out << prefix << ",,\n";
+      // fmt's "{}" is the shortest text that reads back to the same double.
+      for (const auto& metric : record.metrics) {
+        out << prefix << ',' << metric.name << ',' << fmt::format("{}", metric.value) << '\n';
+      }
     }
-  }
-  if (!out)
-    throw std::runtime_error("cannot write " + path.string());
+  });
 }
 
 }  // namespace holebench::harness

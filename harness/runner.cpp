@@ -127,13 +127,17 @@ JobRecord finish_child(const Child& child, const Job& job, int wait_status) {
 
 class Progress {
  public:
-  Progress(std::size_t total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(2)) {}
+  /// `already_done`: jobs kept from an earlier run (--resume): counted as done, but not
+  /// in the rate, which is this run's.
+  Progress(std::size_t total, std::size_t already_done, bool enabled)
+      : total_(total), already_done_(already_done), enabled_(enabled), tty_(::isatty(2)) {}
 
   void update(std::size_t done, std::size_t failures, const std::string& last) {
     if (!enabled_)
       return;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
-    const double rate = elapsed > 0 ? done / elapsed : 0.0;
+    const std::size_t done_now = done > already_done_ ? done - already_done_ : 0;
+    const double rate = elapsed > 0 ? done_now / elapsed : 0.0;
     const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
     const int width = 28;
     const int filled = total_ ? static_cast<int>(width * done / total_) : width;
@@ -156,6 +160,7 @@ class Progress {
 
  private:
   std::size_t total_;
+  std::size_t already_done_;
   bool enabled_;
   bool tty_;
   Clock::time_point start_ = Clock::now();
@@ -200,7 +205,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
   const int workers = options.workers > 0
                           ? options.workers
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  Progress progress(jobs.size(), options.progress);
+  Progress progress(jobs.size(), result.resumed, options.progress);
   std::size_t finished = result.resumed;
   std::size_t failures = 0;
   for (const auto& [id, record] : done)
