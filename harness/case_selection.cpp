@@ -27,6 +27,23 @@ bool wildcard_match(const std::string& pattern, const std::string& text) {
   return p == pattern.size();
 }
 
+namespace {
+
+// Whether `pattern` could name cases of a model the catalog skipped: its first two segments
+// ("cad/fandisk" of "cad/fandisk/*/small") match the model's "family/name".
+bool names_a_skipped_model(const generators::CaseCatalog& catalog, const std::string& pattern) {
+  const auto first = pattern.find('/');
+  const auto second = first == std::string::npos ? first : pattern.find('/', first + 1);
+  const std::string head = pattern.substr(0, second);
+  for (const auto& skipped : catalog.skipped()) {
+    if (wildcard_match(head, skipped.name))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
                                                      const std::vector<std::string>& patterns) {
   const auto& all = catalog.cases();
@@ -39,7 +56,7 @@ std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatal
         any = true;
       }
     }
-    if (!any) {
+    if (!any && !names_a_skipped_model(catalog, pattern)) {
       throw std::invalid_argument("no case matches '" + pattern + "' (see `holebench cases list`)");
     }
   }

@@ -13,7 +13,9 @@ bool wildcard_match(const std::string& pattern, const std::string& text);
 
 /// The catalog's cases matching any of `patterns`, in catalog order. An exact id or a
 /// pattern that matches nothing is an error (std::invalid_argument), so that a typo never
-/// silently runs nothing.
+/// silently runs nothing; except where it names a model the catalog skipped (a missing,
+/// open, non-manifold or degenerate mesh: `catalog.skipped()` holds the reason, which the
+/// commands print), so that the rest of the selection still runs.
 std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
                                                      const std::vector<std::string>& patterns);
 

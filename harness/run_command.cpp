@@ -68,6 +68,10 @@ generators::CatalogOptions run_catalog_options(const RunOptions& options) {
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const generators::CaseCatalog catalog(run_catalog_options(options));
+  for (const auto& skipped : catalog.skipped()) {
+    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
+                 skipped.reason.c_str());
+  }
   const std::vector<Job> jobs = jobs_of_shard(plan_jobs(options, catalog), options.shard);
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;
@@ -78,11 +82,6 @@ RunSummary run_jobs(const RunOptions& options) {
     job_options.snapshot_dir = options.out_dir / "snapshots";
     std::filesystem::create_directories(job_options.snapshot_dir);
   }
-  for (const auto& skipped : catalog.skipped()) {
-    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
-                 skipped.reason.c_str());
-  }
-
   RunSummary summary;
   const JobFunction run_one = [&](const Job& job) { return run_job(job, job_options); };
   if (options.in_process) {

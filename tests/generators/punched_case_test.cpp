@@ -109,7 +109,8 @@ std::filesystem::path temp_folder(const std::string& name) {
 }
 
 // A user's folder: a good mesh gives file/<stem>/... cases; an open mesh, a file that is
-// not a mesh and a non-manifold one are skipped with their reason, and the rest still works.
+// not a mesh, a non-manifold and a degenerate one are skipped with their reason, and the rest
+// still works.
 TEST(CaseCatalog, UserMeshesAreUsedAndBadOnesSkippedWithTheirReason) {
   const auto dir = temp_folder("user");
   write_mesh(make_box({Point(1.0, 1.0, 1.0), 0.05}), dir / "good_box.off");
@@ -120,6 +121,9 @@ TEST(CaseCatalog, UserMeshesAreUsedAndBadOnesSkippedWithTheirReason) {
     // Three triangles on one edge: non-manifold.
     std::ofstream(dir / "fin.off")
         << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
+    // A closed tetrahedron whose fourth vertex lies on an edge: a zero-area triangle.
+    std::ofstream(dir / "flat.off") << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.5 0 0\n"
+                                       "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
   }
   CatalogOptions options = no_cad();
   options.user_meshes = {dir};
@@ -133,7 +137,8 @@ TEST(CaseCatalog, UserMeshesAreUsedAndBadOnesSkippedWithTheirReason) {
   std::map<std::string, std::string> reasons;
   for (const auto& s : catalog.skipped())
     reasons[s.name] = s.reason;
-  ASSERT_EQ(reasons.size(), 3u);
+  ASSERT_EQ(reasons.size(), 4u);
+  EXPECT_NE(reasons["file/flat"].find("degenerate"), std::string::npos) << reasons["file/flat"];
   EXPECT_NE(reasons["file/open"].find("open"), std::string::npos);
   EXPECT_NE(reasons["file/fin"].find("non-manifold edge"), std::string::npos);
   EXPECT_NE(reasons["file/not_a_mesh"].find("not_a_mesh.obj"), std::string::npos);
