@@ -65,6 +65,42 @@ TEST(Evaluation, UnrepairedInputIsOpenAndFar) {
   EXPECT_EQ(e.find("original_faces_unchanged_ok")->value, 1.0);
 }
 
+// The slice paper's Table 2 error on a known answer: the complete model with the vertices
+// inside a face-interior hole marked new and lifted off the face by d along its normal.
+// Each is then exactly d from the complete model, so the mean is d (relative to the
+// diagonal); the whole-model Hausdorff distance is d too.
+TEST(Evaluation, NewVertexErrorIsTheOffsetOfTheNewVertices) {
+  const Case c = generators::make_case("box/face_interior");
+  MethodResult result;
+  result.repaired = c.complete;
+  Mesh& mesh = result.repaired;
+  std::vector<char> removed(mesh.n_faces(), 0);
+  for (int f : c.holes[0].removed_faces)
+    removed[f] = 1;
+  const Point normal = face_normal(mesh, mesh.face_handle(c.holes[0].removed_faces.front()));
+  const double diagonal = bounding_box_diagonal(c.complete);
+  const double d = 1e-3 * diagonal;
+  std::size_t lifted = 0;
+  for (auto v : mesh.vertices()) {
+    bool inside = true;
+    for (auto f : mesh.vf_range(v))
+      inside = inside && removed[f.idx()];
+    if (!inside)
+      continue;
+    mesh.data(v).provenance = Provenance::New;
+    mesh.point(v) += normal * d;
+    ++lifted;
+  }
+  for (int f : c.holes[0].removed_faces)
+    mesh.data(mesh.face_handle(f)).provenance = Provenance::New;
+  ASSERT_GT(lifted, 0u);
+  const Evaluation e = evaluate(c, result);
+  ASSERT_TRUE(has(e, "new_vertex_mean_error_rel_diag"));
+  EXPECT_NEAR(e.find("new_vertex_mean_error_rel_diag")->value, 1e-3, 1e-12);
+  EXPECT_NEAR(e.find("hausdorff_rel_diag")->value, 1e-3, 1e-12);
+  EXPECT_LE(e.find("hausdorff_upper_rel_diag")->value, 1e-3 + 1e-4);
+}
+
 // An arrow straight above a face-interior hole, and a classification: both are judged.
 TEST(Evaluation, ArrowsAndClassificationsAreJudged) {
   const Case c = generators::make_case("brep/k1/inner/small");

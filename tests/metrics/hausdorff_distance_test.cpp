@@ -1,5 +1,7 @@
 #include "metrics/hausdorff_distance.h"
 
+#include "metrics/evaluation.h"
+
 #include "core/geometry.h"
 #include "generators/box_holes.h"
 #include "generators/box_solid.h"
@@ -99,6 +101,28 @@ TEST(HausdorffDistance, AgreesWithCgalOnANoisyMesh) {
 TEST(HausdorffDistance, AgreesWithCgalOnIdenticalMeshes) {
   const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
   expect_agrees_with_cgal(box, box, 1e-4);
+}
+
+// The numbers the records carry come from evaluate() (one shared first pass for all the
+// distances, scenes of the whole models): they agree with CGAL too, at the default bound.
+TEST(HausdorffDistance, TheEvaluationsValueAgreesWithCgal) {
+  for (const char* id :
+       {"box/face_interior", "box/corner", "brep/k3/inner/convex-convex-reflex/small"}) {
+    SCOPED_TRACE(id);
+    const Case c = generators::make_case(id);
+    MethodResult result;
+    result.repaired = filled_without_refinement(c.input);
+    const Evaluation e = evaluate(c, result);
+    const double diagonal = bounding_box_diagonal(c.complete);
+    const double bound = EvaluationOptions{}.hausdorff_error_bound_rel_diag;
+    const double lower = e.find("hausdorff_rel_diag")->value;
+    const double upper = e.find("hausdorff_upper_rel_diag")->value;
+    EXPECT_LE(upper - lower, bound * (1.0 + 1e-9));
+    const double reference =
+        cgal_hausdorff(result.repaired, c.complete, bound * diagonal) / diagonal;
+    EXPECT_GE(reference, lower - bound);
+    EXPECT_LE(reference, upper + bound);
+  }
 }
 
 TEST(HausdorffDistance, SameInputsGiveTheSameNumbers) {
