@@ -536,6 +536,16 @@ int main(int argc, char** argv) {
       for (const auto& path : holebench::harness::write_paper_figures(figures_options)) {
         fmt::print("{}\n", path.string());
       }
+      if (!figures_options.results) {
+        fmt::print(stderr,
+                   "holebench figures: only figure 5 (it needs no results); Table 2 and the "
+                   "crease table need --results of the paper suite (holebench run --suite paper "
+                   "--out DIR)\n");
+      } else {
+        const auto data = holebench::harness::read_results_json(*figures_options.results);
+        for (const auto& gap : holebench::harness::paper_figure_gaps(data))
+          fmt::print(stderr, "holebench figures: {} (run the paper suite)\n", gap);
+      }
       return 0;
     }
     if (report->parsed()) {

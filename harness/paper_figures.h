@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace holebench::harness {
@@ -27,5 +28,10 @@ struct FiguresOptions {
 
 /// Writes the figures and tables; returns the files written.
 std::vector<std::filesystem::path> write_paper_figures(const FiguresOptions& options);
+
+/// What `data` lacks for the tables (no CAD records for Table 2, no crease records for
+/// figures 10/13, no records of a compared method): one sentence each, empty when nothing
+/// is missing. A table without its records is still written, saying so.
+std::vector<std::string> paper_figure_gaps(const ResultsData& data);
 
 }  // namespace holebench::harness

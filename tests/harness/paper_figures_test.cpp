@@ -1,5 +1,7 @@
 #include "harness/paper_figures.h"
 
+#include "harness/results_file.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -34,6 +36,69 @@ TEST(PaperFigures, SameInputsGiveTheSameBytes) {
     EXPECT_EQ(bytes(first[i]), bytes(second[i])) << first[i];
   }
   EXPECT_GT(std::filesystem::file_size(first[0]), 10000u);  // the rendered figure 5
+}
+
+JobRecord record(const std::string& case_id, const std::string& family, const std::string& method,
+                 std::vector<MetricValue> metrics) {
+  JobRecord r;
+  r.job.case_id = case_id;
+  r.job.method_id = method;
+  r.case_family = family;
+  r.metrics = std::move(metrics);
+  return r;
+}
+
+std::string table_file(const std::vector<std::filesystem::path>& files, const std::string& stem) {
+  for (const auto& f : files) {
+    if (f.filename().string().find(stem) == 0 && f.extension() == ".md")
+      return bytes(f);
+  }
+  ADD_FAILURE() << "no " << stem;
+  return {};
+}
+
+// Table 2 and the crease table read the records they name: a model's row is the mean of its
+// holes' new-vertex errors per method, and the crease table lists each crease record.
+TEST(PaperFigures, TablesHoldTheRecordsValues) {
+  ResultsData data;
+  data.records = {
+      record("cad/fandisk/edge_convex/small", "cad", "slice_loft",
+             {{"new_vertex_mean_error_rel_diag", 1e-3},
+              {"new_faces_count", 40},
+              {"input_faces_count", 1000}}),
+      record("cad/fandisk/corner_ccc/small", "cad", "slice_loft",
+             {{"new_vertex_mean_error_rel_diag", 3e-3},
+              {"new_faces_count", 60},
+              {"input_faces_count", 1000}}),
+      record("cad/fandisk/edge_convex/small", "cad", "liepa_cgal",
+             {{"new_vertex_mean_error_rel_diag", 5e-3}}),
+      record("crease/fandisk/2", "crease", "crest_feature", {{"hausdorff_rel_diag", 0.25}}),
+  };
+  const auto dir = std::filesystem::temp_directory_path() / "holebench_figures_tables";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto results = dir / "results.json";
+  write_results_json(results, RunContext{}, data.records);
+  FiguresOptions options;
+  options.tile_width = 80;
+  options.tile_height = 60;
+  options.results = results;
+  options.out_dir = dir / "figures";
+  const auto files = write_paper_figures(options);
+  const std::string table2 = table_file(files, "table2");
+  // fandisk at noise 0: 1000 input triangles, (40 + 60) / 2 new, slice_loft (1e-3 + 3e-3) / 2,
+  // no slice_direct record, liepa_cgal 5e-3.
+  EXPECT_NE(table2.find("| fandisk | 0 | 1000 | 50 | 2.000e-03 | - | 5.000e-03 |"),
+            std::string::npos)
+      << table2;
+  const std::string creases = table_file(files, "figures10_13");
+  EXPECT_NE(creases.find("| crease/fandisk/2 | crest_feature |"), std::string::npos) << creases;
+  EXPECT_NE(creases.find("2.500e-01"), std::string::npos) << creases;
+
+  const auto gaps = paper_figure_gaps(read_results_json(results));
+  ASSERT_EQ(gaps.size(), 1u);
+  EXPECT_NE(gaps[0].find("slice_direct"), std::string::npos) << gaps[0];
+  EXPECT_EQ(paper_figure_gaps(ResultsData{}).size(), 2u);  // no CAD, no crease records
 }
 
 }  // namespace
