@@ -9,5 +9,6 @@ out="${1:-holebench-out}"
 scripts/setup.sh
 scripts/build.sh release
 build/release/harness/holebench run --suite default --out "$out"
-build/release/harness/holebench report "$out"
+# The case gallery first, so that the report's page links it.
 build/release/harness/holebench cases gallery "$out" > /dev/null
+build/release/harness/holebench report "$out"
