@@ -84,18 +84,12 @@ Overlay hole_overlay(const Mesh& holed, double normal_length) {
   return overlay;
 }
 
-void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length, const Camera& camera) {
+void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length) {
   const Rgb blue{0.05f, 0.15f, 0.75f};
   const Point r = arrow.direction / arrow.direction.norm();
-  const Point tip = arrow.position + r * length;
-  Point side = OpenMesh::cross(r, camera.direction);
-  if (side.norm() < 1e-9)
-    side = OpenMesh::cross(r, std::abs(r[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0));
-  side /= side.norm();
-  const double head = 0.2 * length;
-  overlay.lines.push_back({arrow.position, tip, blue, 4.0f});
-  overlay.lines.push_back({tip, tip - r * head + side * (0.5 * head), blue, 4.0f});
-  overlay.lines.push_back({tip, tip - r * head - side * (0.5 * head), blue, 4.0f});
+  // A shaded 3D arrow from P along r (it hides and is hidden by the model), with P marked.
+  overlay.solids.push_back(
+      {arrow_solid(arrow.position, arrow.position + r * length, 0.035 * length), blue});
   overlay.dots.push_back({arrow.position, blue, 4.0f});
 }
 
@@ -117,7 +111,7 @@ Image job_snapshot(const Case& c, const MethodResult& result, const SnapshotOpti
     // Point the arrow's shaft from P most of the way to the hole.
     const double length =
         std::max(0.05 * diagonal, 0.8 * (hole.centroid - hole.arrow->position).norm());
-    add_arrow(overlay, *hole.arrow, length, camera);
+    add_arrow(overlay, *hole.arrow, length);
   }
   return render_snapshot(result.repaired, camera, options, overlay);
 }

@@ -18,9 +18,10 @@ Camera hole_camera(const Case& c);
 /// hole (black strokes), as figure 5 of the B-Rep paper shows its cases.
 Overlay hole_overlay(const Mesh& holed, double normal_length);
 
-/// A guidance arrow (the B-Rep paper's (P, r)) drawn as a 3D arrow: a shaft from P along r
-/// of `length` and a head at its tip, in a plane facing the camera.
-void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length, const Camera& camera);
+/// A guidance arrow (the B-Rep paper's (P, r)) drawn as a shaded 3D arrow: a round shaft
+/// from P along r of `length` with a cone at its tip (render/snapshot.h's arrow_solid), and
+/// P marked by a dot.
+void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length);
 
 /// The snapshot of a job: the repaired mesh from the case's hole view, with every guidance
 /// arrow of the method drawn in.

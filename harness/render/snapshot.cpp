@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace holebench::render {
 
@@ -135,9 +136,59 @@ void draw_overlay(Image& image, const View& view, const std::vector<double>& dep
 
 }  // namespace
 
+TriangleSoup arrow_solid(const Point& from, const Point& to, double radius, int segments) {
+  const Point axis = to - from;
+  const double length = axis.norm();
+  const Point r = axis / length;
+  // Two unit vectors across the axis.
+  Point u = OpenMesh::cross(r, std::abs(r[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0));
+  u /= u.norm();
+  const Point v = OpenMesh::cross(r, u);
+  // The profile (position along the axis, radius) from the tail's pole to the tip's.
+  const double head = 0.25 * length;
+  const std::vector<std::pair<double, double>> profile = {
+      {0.0, radius}, {length - head, radius}, {length - head, 2.5 * radius}};
+  TriangleSoup soup;
+  soup.points.push_back(from);  // 0: the tail's pole
+  for (const auto& [along, width] : profile) {
+    for (int j = 0; j < segments; ++j) {
+      const double angle = 2.0 * M_PI * j / segments;
+      soup.points.push_back(from + r * along + (u * std::cos(angle) + v * std::sin(angle)) * width);
+    }
+  }
+  const int tip = static_cast<int>(soup.points.size());
+  soup.points.push_back(to);
+  const auto ring = [segments](int k, int j) { return 1 + k * segments + (j % segments); };
+  const int rings = static_cast<int>(profile.size());
+  for (int j = 0; j < segments; ++j) {
+    soup.triangles.push_back({0, ring(0, j + 1), ring(0, j)});  // the tail's cap
+    for (int k = 0; k + 1 < rings; ++k) {
+      soup.triangles.push_back({ring(k, j), ring(k, j + 1), ring(k + 1, j + 1)});
+      soup.triangles.push_back({ring(k, j), ring(k + 1, j + 1), ring(k + 1, j)});
+    }
+    soup.triangles.push_back({ring(rings - 1, j), ring(rings - 1, j + 1), tip});  // the cone
+  }
+  return soup;
+}
+
 Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options,
                       const Overlay& overlay) {
   const embree::TriangleScene scene(mesh);
+  // The overlay's solids in one scene of their own, with each triangle's colour.
+  TriangleSoup solids;
+  std::vector<Rgb> solid_colour;
+  for (const auto& solid : overlay.solids) {
+    const int offset = static_cast<int>(solids.points.size());
+    solids.points.insert(solids.points.end(), solid.triangles.points.begin(),
+                         solid.triangles.points.end());
+    for (const auto& t : solid.triangles.triangles) {
+      solids.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+      solid_colour.push_back(solid.colour);
+    }
+  }
+  std::optional<embree::TriangleScene> solid_scene;
+  if (!solids.triangles.empty())
+    solid_scene.emplace(build_mesh(solids, {"the overlay's solids", false}));
   Image image(options.width, options.height);
   const View view(camera, options.width, options.height);
   const int n = std::max(1, options.samples_per_axis);
@@ -151,8 +202,18 @@ Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOpti
         for (int sx = 0; sx < n; ++sx) {
           const Point direction = view.ray(x + (sx + 0.5) / n, y + (sy + 0.5) / n);
           const auto hit = scene.intersect(view.eye, direction);
+          const auto solid_hit =
+              solid_scene ? solid_scene->intersect(view.eye, direction) : embree::RayHit{};
           Rgb colour;
-          if (!hit.hit) {
+          if (solid_hit.hit && (!hit.hit || solid_hit.distance < hit.distance)) {
+            auto& d = depth[static_cast<std::size_t>(y) * options.width + x];
+            d = std::min(d, solid_hit.distance);
+            const double facing =
+                std::abs(OpenMesh::dot(solid_hit.normal, direction / direction.norm()));
+            const float light = static_cast<float>(0.3 + 0.7 * facing);
+            const Rgb& base = solid_colour[solid_hit.face];
+            colour = {base.r * light, base.g * light, base.b * light};
+          } else if (!hit.hit) {
             // A soft vertical gradient as background.
             const float t = static_cast<float>(1.0 - static_cast<double>(y) / options.height);
             colour = {0.93f - 0.12f * t, 0.94f - 0.10f * t, 0.96f - 0.05f * t};

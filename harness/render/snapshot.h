@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "core/mesh_builder.h"
 #include "harness/render/image.h"
 
 #include <vector>
@@ -40,10 +41,22 @@ struct OverlayDot {
   Rgb colour;
   float radius_px = 4.0f;
 };
+/// A closed solid drawn into the scene in one colour, shaded like the mesh (it hides the
+/// mesh and is hidden by it): the guidance arrows.
+struct OverlaySolid {
+  TriangleSoup triangles;
+  Rgb colour;
+};
 struct Overlay {
   std::vector<OverlayLine> lines;
   std::vector<OverlayDot> dots;
+  std::vector<OverlaySolid> solids;
 };
+
+/// A 3D arrow from `from` to `to` as a closed solid of revolution (a round shaft and a cone
+/// for its head, `segments` around): shaft radius `radius`, head radius 2.5 radius and
+/// length a quarter of the arrow's.
+TriangleSoup arrow_solid(const Point& from, const Point& to, double radius, int segments = 20);
 
 Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options = {},
                       const Overlay& overlay = {});
