@@ -157,14 +157,22 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
       return std::nullopt;
   }
   // Convexity at a transition: the sharp edge of the complete model at the transition
-  // vertex between the two regions.
+  // vertex between the two regions (that very edge: at a corner other sharp edges meet the
+  // vertex too).
   if (labels.k > 1) {
     for (std::size_t i = 0; i < transition_vertices.size(); ++i) {
       const auto v =
           complete.vertex_handle(punched.vertex_to_complete[transition_vertices[i].idx()]);
+      const int from = labels.regions[i];
+      const int to = labels.regions[(i + 1) % labels.regions.size()];
       std::optional<Convexity> convexity;
-      for (auto e : complete.ve_range(v)) {
-        if (model.features.edge_is_sharp[e.idx()])
+      for (auto h : complete.voh_range(v)) {
+        const auto e = complete.edge_handle(h);
+        if (!model.features.edge_is_sharp[e.idx()] || complete.is_boundary(e))
+          continue;
+        const int a = region(complete, complete.face_handle(h));
+        const int b = region(complete, complete.opposite_face_handle(h));
+        if ((a == from && b == to) || (a == to && b == from))
           convexity = model.features.edge_convexity[e.idx()];
       }
       if (!convexity)

@@ -2,14 +2,18 @@
 
 #include "core/boundary_loops.h"
 #include "core/mesh_io.h"
+#include "core/plane_fit.h"
 #include "generators/box_solid.h"
 #include "generators/case_catalog.h"
+#include "tests/generators/label_geometry.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <set>
 
 namespace holebench::generators {
@@ -27,6 +31,104 @@ std::multiset<Convexity> signature_of(const std::string& kind) {
   for (char c : kind.substr(kind.find('_') + 1))
     s.insert(c == 'c' ? Convexity::Convex : Convexity::Reflex);
   return s;
+}
+
+// The labels of every labelled punched case (procedural solids and CAD models, one hole,
+// one loop), read a second way off the meshes as the B-Rep cases' are: k and the regions
+// along the loop, each transition's convexity from the complete mesh's dihedral angle, the
+// orientation from the fitted planes of the loop's regions, and the missing corners.
+TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
+  using namespace label_geometry;
+  const CaseCatalog catalog;
+  int checked = 0;
+  for (const auto& descriptor : catalog.cases()) {
+    if (descriptor.family != "solid" && descriptor.family != "cad")
+      continue;
+    const Case c = catalog.make(descriptor.id);
+    const auto loops = find_boundary_loops(c.input);
+    if (c.holes.size() != 1 || loops.size() != 1 || !c.holes[0].labels)
+      continue;
+    SCOPED_TRACE(descriptor.id);
+    const HoleLabels& labels = *c.holes[0].labels;
+    const auto& loop = loops[0];
+    std::map<Key, VertexHandle> complete_vertex;
+    for (auto v : c.complete.vertices())
+      complete_vertex[key_of(c.complete.point(v))] = v;
+    std::set<Key> input_points;
+    for (auto v : c.input.vertices())
+      input_points.insert(key_of(c.input.point(v)));
+    std::vector<char> removed(c.complete.n_faces(), 0);
+    for (int f : c.holes[0].removed_faces)
+      removed[f] = 1;
+
+    // The input carries no region ids (a method segments it itself): each input face takes
+    // the region of the complete model's face at the same three points.
+    std::map<std::array<Key, 3>, int> region_of_corners;
+    const auto corners_of = [](const Mesh& mesh, FaceHandle f) {
+      std::array<Key, 3> corners;
+      int k = 0;
+      for (auto v : mesh.fv_range(f))
+        corners[k++] = key_of(mesh.point(v));
+      std::sort(corners.begin(), corners.end());
+      return corners;
+    };
+    for (auto f : c.complete.faces())
+      region_of_corners[corners_of(c.complete, f)] = region(c.complete, f);
+    const auto visits = visits_along(
+        c.input, loop, [&](FaceHandle f) { return region_of_corners.at(corners_of(c.input, f)); });
+    std::vector<int> regions;
+    for (const auto& v : visits)
+      regions.push_back(v.region);
+    ASSERT_EQ(static_cast<int>(regions.size()), labels.k);
+    const int rotation = rotation_of(regions, labels.regions);
+    ASSERT_GE(rotation, 0) << "regions differ up to rotation: " << ::testing::PrintToString(regions)
+                           << " vs " << ::testing::PrintToString(labels.regions);
+    ASSERT_EQ(labels.transitions.size(), labels.k > 1 ? regions.size() : 0u);
+    for (std::size_t t = 0; t < labels.transitions.size(); ++t) {
+      const std::size_t from = (t + rotation) % visits.size();
+      const std::size_t to = (from + 1) % visits.size();
+      const auto h = loop.halfedges[visits[to].first];
+      const auto vertex = complete_vertex.at(key_of(c.input.point(c.input.from_vertex_handle(h))));
+      const auto convexity =
+          convexity_at(c.complete, vertex, visits[from].region, visits[to].region);
+      ASSERT_TRUE(convexity.has_value()) << "no edge between the regions at transition " << t;
+      EXPECT_EQ(*convexity, labels.transitions[t]) << "transition " << t;
+    }
+
+    // Inner: every removed face lies in the plane of one of the loop's regions.
+    const auto planes = fit_region_planes(c.complete);
+    const double tolerance = 1e-6 * bounding_box_diagonal(c.complete);
+    bool all_in_planes = true;
+    double worst = 0.0;
+    for (int f : c.holes[0].removed_faces) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int r : regions) {
+        if (!planes[r].valid)
+          continue;
+        double farthest = 0.0;
+        for (auto v : c.complete.fv_range(c.complete.face_handle(f)))
+          farthest =
+              std::max(farthest, std::abs(planes[r].plane.signed_distance(c.complete.point(v))));
+        best = std::min(best, farthest);
+      }
+      worst = std::max(worst, best);
+      all_in_planes = all_in_planes && best < tolerance;
+    }
+    SCOPED_TRACE("farthest removed vertex from the loop's planes: " +
+                 std::to_string(worst / bounding_box_diagonal(c.complete)) + " diag");
+    EXPECT_EQ(all_in_planes ? Orientation::Inner : Orientation::Outer, labels.orientation);
+
+    for (const Point& corner : c.holes[0].missing_corners) {
+      ASSERT_TRUE(complete_vertex.count(key_of(corner)));
+      EXPECT_FALSE(input_points.count(key_of(corner)));
+      for (auto f : c.complete.vf_range(complete_vertex.at(key_of(corner))))
+        EXPECT_TRUE(removed[f.idx()]);
+    }
+    ++checked;
+  }
+  // The procedural solids alone give more than a dozen labelled holes (the CAD models more
+  // where the CGAL data set is there).
+  EXPECT_GE(checked, 12);
 }
 
 // Every punched case of the procedural solids against what its target kind promises.

@@ -1,0 +1,110 @@
+// Test helpers: a hole's labels read off the meshes, independently of any generator. Shared
+// by the B-Rep case tests and the punched (procedural and CAD) case tests.
+#pragma once
+
+#include "core/boundary_loops.h"
+#include "core/case.h"
+#include "core/geometry.h"
+#include "core/mesh.h"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace holebench::generators::label_geometry {
+
+using Key = std::array<double, 3>;
+inline Key key_of(const Point& p) {
+  return {p[0], p[1], p[2]};
+}
+
+// One visit of a loop to a region: the region and the loop index where the visit starts.
+struct Visit {
+  int region;
+  std::size_t first;
+};
+
+// The regions of the faces along the loop, consecutive repeats merged (cyclically).
+// `region_of(face)` gives a face's region (by default the mesh's own region ids).
+template <typename RegionOf>
+std::vector<Visit> visits_along(const Mesh& mesh, const BoundaryLoop& loop, RegionOf region_of) {
+  const std::size_t n = loop.size();
+  auto region_at = [&](std::size_t i) {
+    return region_of(mesh.opposite_face_handle(loop.halfedges[i % n]));
+  };
+  std::vector<Visit> visits;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (region_at(i) != region_at(i + n - 1))
+      visits.push_back({region_at(i), i});
+  }
+  if (visits.empty())
+    visits.push_back({region_at(0), 0});
+  return visits;
+}
+
+inline std::vector<Visit> visits_along(const Mesh& mesh, const BoundaryLoop& loop) {
+  return visits_along(mesh, loop, [&mesh](FaceHandle f) { return region(mesh, f); });
+}
+
+// The rotation r with a[(i + r) % n] == b[i] for all i, or -1.
+template <typename T>
+int rotation_of(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size())
+    return -1;
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    bool same = true;
+    for (std::size_t i = 0; i < a.size() && same; ++i)
+      same = a[(i + r) % a.size()] == b[i];
+    if (same)
+      return static_cast<int>(r);
+  }
+  return -1;
+}
+
+// Signed dihedral sign of an edge of the complete mesh at `vertex` between regions a and b.
+inline std::optional<Convexity> convexity_at(const Mesh& complete, VertexHandle vertex, int a,
+                                             int b) {
+  for (auto h : complete.voh_range(vertex)) {
+    const auto e = complete.edge_handle(h);
+    if (complete.is_boundary(e))
+      continue;
+    const int ra = region(complete, complete.face_handle(h));
+    const int rb = region(complete, complete.opposite_face_handle(h));
+    if ((ra == a && rb == b) || (ra == b && rb == a))
+      return signed_dihedral_angle(complete, e) > 0.0 ? Convexity::Convex : Convexity::Reflex;
+  }
+  return std::nullopt;
+}
+
+// Whether the input's region `r` has the loop halfedge `boundary` (a hole halfedge) on its
+// outer boundary: walk the region's own boundary (face side) from the halfedge opposite
+// `boundary` and take the sign of its area about the region's normal.
+inline BoundaryKind boundary_kind(const Mesh& input, HalfedgeHandle boundary, const Point& normal) {
+  const int r = region(input, input.opposite_face_handle(boundary));
+  auto on_region_boundary = [&](HalfedgeHandle h) {
+    if (input.is_boundary(h) || region(input, input.face_handle(h)) != r)
+      return false;
+    const auto other = input.opposite_face_handle(h);
+    return !other.is_valid() || region(input, other) != r;
+  };
+  const HalfedgeHandle start = input.opposite_halfedge_handle(boundary);
+  Point twice_area(0.0, 0.0, 0.0);
+  HalfedgeHandle h = start;
+  for (std::size_t guard = 0; guard < input.n_halfedges(); ++guard) {
+    twice_area += OpenMesh::cross(input.point(input.from_vertex_handle(h)),
+                                  input.point(input.to_vertex_handle(h)));
+    HalfedgeHandle next;
+    for (auto out : input.voh_range(input.to_vertex_handle(h))) {
+      if (on_region_boundary(out)) {
+        next = out;
+        break;
+      }
+    }
+    h = next;
+    if (!h.is_valid() || h == start)
+      break;
+  }
+  return OpenMesh::dot(twice_area, normal) > 0.0 ? BoundaryKind::Outer : BoundaryKind::Inner;
+}
+
+}  // namespace holebench::generators::label_geometry
