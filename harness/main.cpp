@@ -319,6 +319,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   slurm_resubmit->add_option("--only", resubmit_only, "Resubmit only these shards, e.g. 1,3")
       ->check(parsed_by(shard_indices, "LIST"));
+  slurm_resubmit->add_flag("--even-if-queued", resubmit_options.even_if_queued,
+                           "Also resubmit shards whose task squeue still lists (pending or "
+                           "running); by default they are left alone");
   slurm_resubmit->add_flag("--dry-run", resubmit_options.dry_run,
                            "Print the sbatch command without submitting");
   slurm_resubmit->add_option("sbatch_options", resubmit_options.sbatch_options,
@@ -491,6 +494,19 @@ int main(int argc, char** argv) {
     if (slurm_resubmit->parsed()) {
       resubmit_options.only = shard_indices(resubmit_only);
       const auto result = holebench::harness::resubmit_shards(resubmit_options);
+      if (!result.warning.empty())
+        fmt::print(stderr, "holebench slurm resubmit: {}\n", result.warning);
+      if (!result.still_queued.empty()) {
+        std::string queued;
+        for (auto index : result.still_queued)
+          queued += (queued.empty() ? "" : ", ") + holebench::harness::shard_folder_name(index);
+        fmt::print(
+            "Still in Slurm's queue, left alone: {} (--even-if-queued to resubmit them "
+            "anyway)\n",
+            queued);
+      }
+      if (result.shards.empty() && !result.still_queued.empty())
+        return 0;
       if (result.shards.empty()) {
         fmt::print(
             "Every shard is complete: nothing to resubmit. Merge with: holebench merge "

@@ -22,6 +22,9 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 
 extern char** environ;
@@ -280,6 +283,33 @@ SlurmSubmitResult submit_shards(const SlurmSubmitOptions& options) {
                       options.sbatch);
 }
 
+std::vector<std::size_t> queued_array_tasks(const std::string& squeue_output,
+                                            const std::map<std::string, std::string>& arrays,
+                                            std::size_t shard_count) {
+  std::set<std::size_t> queued;
+  std::istringstream lines(squeue_output);
+  for (std::string line; std::getline(lines, line);) {
+    line.erase(0, line.find_first_not_of(" \t"));
+    line.erase(line.find_last_not_of(" \t\r") + 1);
+    const auto underscore = line.find('_');
+    const auto it = arrays.find(line.substr(0, underscore));
+    if (it == arrays.end())
+      continue;  // another job
+    std::string tasks = underscore == std::string::npos ? it->second : line.substr(underscore + 1);
+    if (!tasks.empty() && tasks.front() == '[') {
+      // A pending array's remaining tasks, "[0,2-3]" or "[2-3%4]" (a throttle).
+      tasks = tasks.substr(1, tasks.find_first_of("]%") - 1);
+    }
+    try {
+      for (auto index : parse_shard_list(tasks, shard_count))
+        queued.insert(index);
+    } catch (const std::invalid_argument&) {
+      // Not ours to read: leave it.
+    }
+  }
+  return {queued.begin(), queued.end()};
+}
+
 SlurmSubmitResult resubmit_shards(const SlurmResubmitOptions& options) {
   const auto dir = absolute_path(options.dir);
   const auto status = shard_status(dir);
@@ -296,18 +326,51 @@ SlurmSubmitResult resubmit_shards(const SlurmResubmitOptions& options) {
   }
   if (shards.empty())
     shards = status.unfinished();
+  // Tasks still pending or running keep their shards.
+  std::vector<std::size_t> still_queued;
+  std::string warning;
+  std::map<std::string, std::string> arrays;
+  for (const auto& submission : status.manifest.submissions) {
+    if (!submission.slurm_job_id.empty())
+      arrays[submission.slurm_job_id] = submission.array;
+  }
+  if (!options.even_if_queued && !arrays.empty() && !shards.empty()) {
+    try {
+      const auto queued = queued_array_tasks(
+          run_and_capture({options.squeue, "--noheader", "--array", "--format=%i"}), arrays,
+          status.manifest.shard_count);
+      std::vector<std::size_t> kept;
+      for (auto index : shards) {
+        if (std::binary_search(queued.begin(), queued.end(), index))
+          still_queued.push_back(index);
+        else
+          kept.push_back(index);
+      }
+      shards = kept;
+    } catch (const std::exception& e) {
+      warning = fmt::format(
+          "could not ask Slurm which shards are still queued ({}): resubmitting every "
+          "unfinished shard",
+          e.what());
+    }
+  }
   if (shards.empty()) {
     SlurmSubmitResult nothing;
     nothing.script = slurm_script_path(dir);
     nothing.manifest = shard_manifest_path(dir);
+    nothing.still_queued = still_queued;
+    nothing.warning = warning;
     return nothing;
   }
   std::sort(shards.begin(), shards.end());
   shards.erase(std::unique(shards.begin(), shards.end()), shards.end());
   const auto& sbatch_options =
       options.sbatch_options.empty() ? status.manifest.sbatch_options : options.sbatch_options;
-  return submit_array(dir, status.manifest, shards, sbatch_options, options.dry_run,
-                      options.sbatch);
+  SlurmSubmitResult result =
+      submit_array(dir, status.manifest, shards, sbatch_options, options.dry_run, options.sbatch);
+  result.still_queued = still_queued;
+  result.warning = warning;
+  return result;
 }
 
 }  // namespace holebench::harness

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,12 @@ struct SlurmResubmitOptions {
   std::vector<std::string> sbatch_options;
   bool dry_run = false;
   std::string sbatch = "sbatch";
+  /// Asked which array tasks of this run's submissions are still pending or running: those
+  /// are left alone (a second task on the same shard folder would write beside the first)
+  /// unless `even_if_queued`. If it cannot be run, every unfinished shard is resubmitted, as
+  /// the result's warning says.
+  std::string squeue = "squeue";
+  bool even_if_queued = false;
 };
 
 struct SlurmSubmitResult {
@@ -46,7 +53,17 @@ struct SlurmSubmitResult {
   std::vector<std::string> sbatch_command;  ///< what was (or, in a dry run, would be) run
   std::string slurm_job_id;                 ///< from sbatch --parsable; empty in a dry run
   bool submitted = false;
+  /// Resubmission: unfinished shards left out because their task is still in Slurm's queue.
+  std::vector<std::size_t> still_queued;
+  std::string warning;  ///< resubmission: why the queue could not be checked, if it could not
 };
+
+/// The array indices of `job_ids`' tasks in `squeue --noheader --array --format=%i` output
+/// ("4242_3" lines; a line "4242" or "4242_[0-3]" is a whole pending array, given by
+/// `arrays`, the --array value of each submission by job id).
+std::vector<std::size_t> queued_array_tasks(const std::string& squeue_output,
+                                            const std::map<std::string, std::string>& arrays,
+                                            std::size_t shard_count);
 
 /// The job array script: one task per shard, each `holebench run --suite FILE --shard
 /// $SLURM_ARRAY_TASK_ID/N --out DIR/shard-$SLURM_ARRAY_TASK_ID --resume ...`, with its

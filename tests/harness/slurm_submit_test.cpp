@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -116,6 +117,7 @@ TEST(SlurmSubmit, SubmitsAndResubmitsOnlyTheUnfinishedShards) {
   SlurmResubmitOptions resubmit;
   resubmit.dir = dir / "run";
   resubmit.sbatch = options.sbatch;
+  resubmit.squeue = "true";  // an empty queue
   const auto again = resubmit_shards(resubmit);
   EXPECT_EQ(again.array, "0,2-3");
   resubmit.only = {2};
@@ -127,6 +129,46 @@ TEST(SlurmSubmit, SubmitsAndResubmitsOnlyTheUnfinishedShards) {
                                 result.script.string() + "\n--parsable --array=2 --time=04:00:00 " +
                                 result.script.string() + "\n");
   EXPECT_EQ(read_shard_manifest(dir / "run").submissions.size(), 3u);
+}
+
+// squeue's lines name array tasks "JOB_INDEX", or a pending array's remaining tasks
+// "JOB_[0,2-3]"; other jobs are ignored.
+TEST(SlurmSubmit, QueuedArrayTasksFromSqueue) {
+  const std::map<std::string, std::string> arrays = {{"4242", "0-3"}, {"4300", "1,3"}};
+  EXPECT_EQ(queued_array_tasks("4242_0\n  4242_3\n999_1\n", arrays, 4),
+            (std::vector<std::size_t>{0, 3}));
+  EXPECT_EQ(queued_array_tasks("4300_[1,3%2]\n", arrays, 4), (std::vector<std::size_t>{1, 3}));
+  EXPECT_EQ(queued_array_tasks("4242\n", arrays, 4), (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_TRUE(queued_array_tasks("", arrays, 4).empty());
+  EXPECT_TRUE(queued_array_tasks("4242_9\n", arrays, 4).empty());  // not a shard of this run
+}
+
+// A shard whose task is still pending or running is not resubmitted beside it.
+TEST(SlurmSubmit, ResubmitLeavesShardsStillInTheQueue) {
+  const auto dir = fresh_dir("queued");
+  const auto log = dir / "sbatch.log";
+  auto options = smoke_options(dir);
+  options.sbatch = fake_sbatch(dir, log);
+  submit_shards(options);
+  const auto squeue = dir / "fake_squeue";
+  std::ofstream(squeue) << "#!/bin/sh\necho '4242_1'\necho '4242_3'\necho '17_2'\n";
+  std::filesystem::permissions(squeue, std::filesystem::perms::owner_all);
+  SlurmResubmitOptions resubmit;
+  resubmit.dir = dir / "run";
+  resubmit.sbatch = options.sbatch;
+  resubmit.squeue = squeue.string();
+  const auto result = resubmit_shards(resubmit);
+  EXPECT_EQ(result.array, "0,2");
+  EXPECT_EQ(result.still_queued, (std::vector<std::size_t>{1, 3}));
+  EXPECT_TRUE(result.warning.empty());
+  resubmit.even_if_queued = true;
+  EXPECT_EQ(resubmit_shards(resubmit).array, "0-3");
+  // Without squeue: every unfinished shard, and a warning saying why.
+  resubmit.even_if_queued = false;
+  resubmit.squeue = (dir / "no_such_squeue").string();
+  const auto blind = resubmit_shards(resubmit);
+  EXPECT_EQ(blind.array, "0-3");
+  EXPECT_NE(blind.warning.find("could not ask Slurm"), std::string::npos) << blind.warning;
 }
 
 TEST(SlurmSubmit, RefusesAFolderHoldingAnotherRun) {
