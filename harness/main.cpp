@@ -459,8 +459,14 @@ int main(int argc, char** argv) {
         return 2;
       }
       std::vector<holebench::harness::ResultsData> sets;
-      for (const auto& path : merge_inputs)
+      for (const auto& path : merge_inputs) {
         sets.push_back(holebench::harness::read_results_json(path));
+        // Snapshot paths follow the merged file (the report finds the pictures).
+        for (auto& record : sets.back().records) {
+          record.snapshot = holebench::harness::snapshot_relative_to(record.snapshot,
+                                                                     path.parent_path(), merge_out);
+        }
+      }
       const auto merged = holebench::harness::merge_results(sets);
       std::filesystem::create_directories(merge_out);
       auto context = merged.context;

@@ -47,6 +47,15 @@ std::string record_to_json_line(const JobRecord& record) {
   return record_to_json(record).dump();
 }
 
+std::string snapshot_relative_to(const std::string& snapshot, const std::filesystem::path& from_dir,
+                                 const std::filesystem::path& to_dir) {
+  if (snapshot.empty())
+    return snapshot;
+  const auto absolute = std::filesystem::absolute(from_dir / snapshot).lexically_normal();
+  return absolute.lexically_relative(std::filesystem::absolute(to_dir).lexically_normal())
+      .generic_string();
+}
+
 ResultsData merge_results(const std::vector<ResultsData>& sets) {
   ResultsData merged;
   if (!sets.empty())

@@ -26,6 +26,11 @@ JobRecord record_from_json_text(const std::string& json_text);
 /// The JSON text of one record (one line, as the runner appends it to records.jsonl).
 std::string record_to_json_line(const JobRecord& record);
 
+/// A record's snapshot path (relative to the folder `from_dir` of its results file) made
+/// relative to `to_dir`, where a merged results file goes; empty stays empty.
+std::string snapshot_relative_to(const std::string& snapshot, const std::filesystem::path& from_dir,
+                                 const std::filesystem::path& to_dir);
+
 /// Merges result sets: records matched by job id; a later set's record replaces an earlier
 /// one with the same id. The context is the first set's, with `suite` kept and the merge
 /// noted. Records are ordered by job id.

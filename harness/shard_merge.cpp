@@ -21,16 +21,6 @@ std::vector<JobRecord> shard_records(const ShardStatus& shard, RunContext* conte
   return read_records_jsonl(shard.folder / "records.jsonl");
 }
 
-// The path of a shard's snapshot relative to the output folder.
-std::string snapshot_relative_to(const std::string& snapshot, const std::filesystem::path& shard,
-                                 const std::filesystem::path& out_dir) {
-  if (snapshot.empty())
-    return snapshot;
-  const auto absolute = std::filesystem::absolute(shard / snapshot).lexically_normal();
-  return absolute.lexically_relative(std::filesystem::absolute(out_dir).lexically_normal())
-      .generic_string();
-}
-
 }  // namespace
 
 ShardMergeResult merge_shards(const ShardMergeOptions& options) {
