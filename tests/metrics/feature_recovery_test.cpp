@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 namespace holebench {
@@ -64,6 +65,39 @@ TEST(FeatureRecovery, UnrepairedInputRecoversNothing) {
   for (const auto& e : r.edges)
     EXPECT_LT(e.covered_fraction, 1.0);
   EXPECT_FALSE(r.normal_deviation_mean_deg.has_value());  // no new faces
+}
+
+// The complete model moved by t (|t| = d along (1, 1, 1)/sqrt(3)) as the repair: for a
+// small d each missing corner's nearest vertex is the moved corner, exactly d away; every sample of
+// a missing edge is between d sqrt(2/3) (its distance to the moved edge's line) and d (to the moved
+// corner) from the moved sharp edges; whether the edges count as present follows the tolerance.
+TEST(FeatureRecovery, AMovedModelIsChargedItsOffset) {
+  const Case c = generators::make_case("brep/k3/inner/convex-convex-convex/small");
+  const embree::TriangleScene scene(c.complete);
+  const auto options = options_for(c);
+  for (const double d : {0.2 * options.edge_tolerance, 3.0 * options.edge_tolerance}) {
+    SCOPED_TRACE(d);
+    Mesh repaired = c.complete;
+    const Point t = Point(1.0, 1.0, 1.0) * (d / std::sqrt(3.0));
+    for (auto v : repaired.vertices())
+      repaired.point(v) += t;
+    const auto r = feature_recovery(c, repaired, scene, options);
+    ASSERT_EQ(r.corner_errors.size(), 1u);
+    // Exactly d while no other vertex comes nearer (the mesh spacing is well above the
+    // small offset); at most d always.
+    if (d < options.edge_tolerance)
+      EXPECT_NEAR(r.corner_errors[0], d, 1e-12 * d);
+    EXPECT_LE(r.corner_errors[0], d * (1.0 + 1e-12));
+    ASSERT_FALSE(r.edges.empty());
+    for (const auto& e : r.edges) {
+      const bool within = d < options.edge_tolerance;
+      EXPECT_EQ(e.present, within);
+      EXPECT_DOUBLE_EQ(e.covered_fraction, within ? 1.0 : 0.0);
+      ASSERT_TRUE(e.distance.has_value());
+      EXPECT_GE(*e.distance, d * std::sqrt(2.0 / 3.0) * (1.0 - 1e-9));
+      EXPECT_LE(*e.distance, d * (1.0 + 1e-9));
+    }
+  }
 }
 
 }  // namespace
