@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace holebench::embree {
 namespace {
 
@@ -50,6 +52,23 @@ TEST(ArrowVisibility, CameraLookingStraightIntoAnUnobstructedHoleSeesAllOfIt) {
   const TriangleScene holed(s.frame);
   // 3 above the centre: the square's corners are atan(0.707 / 3) = 13 degrees off axis.
   EXPECT_DOUBLE_EQ(visible_fraction(Point(0.5, 0.5, 3.0), Point(0, 0, -1), samples, holed), 1.0);
+}
+
+// The field of view is an option: a camera 0.5 above the square's centre with a 90-degree
+// cone sees the disc of radius 0.5 inscribed in the square, pi / 4 of it (up to sampling);
+// with the default 60 degrees, the disc of radius 0.5 tan(30) = 0.289: pi 0.289^2.
+TEST(ArrowVisibility, TheFieldOfViewBoundsWhatIsSeen) {
+  Scene s;
+  ArrowVisibilityOptions options;
+  options.sample_spacing = 0.01;
+  const auto samples = sample_faces(s.missing, all_faces(s.missing), options);
+  const TriangleScene holed(s.frame);
+  const Point eye(0.5, 0.5, 0.5), down(0, 0, -1);
+  options.field_of_view_degrees = 90.0;
+  EXPECT_NEAR(visible_fraction(eye, down, samples, holed, options), M_PI / 4.0, 0.01);
+  options.field_of_view_degrees = 60.0;
+  const double r = 0.5 * std::tan(M_PI / 6.0);
+  EXPECT_NEAR(visible_fraction(eye, down, samples, holed, options), M_PI * r * r, 0.01);
 }
 
 TEST(ArrowVisibility, CameraBehindAWallSeesNothing) {
