@@ -7,8 +7,12 @@
 #include "core/geometry.h"
 #include "core/mesh.h"
 
+#include <gtest/gtest.h>
+
 #include <array>
+#include <map>
 #include <optional>
+#include <set>
 #include <vector>
 
 namespace holebench::generators::label_geometry {
@@ -105,6 +109,50 @@ inline BoundaryKind boundary_kind(const Mesh& input, HalfedgeHandle boundary, co
       break;
   }
   return OpenMesh::dot(twice_area, normal) > 0.0 ? BoundaryKind::Outer : BoundaryKind::Inner;
+}
+
+using VertexOfPoint = std::map<Key, VertexHandle>;
+
+/// The complete mesh's vertices by their exact points (the input keeps those points).
+inline VertexOfPoint vertex_of_point(const Mesh& complete) {
+  VertexOfPoint vertices;
+  for (auto v : complete.vertices())
+    vertices[key_of(complete.point(v))] = v;
+  return vertices;
+}
+
+/// Each transition's convexity from the complete mesh's dihedral angle at the transition
+/// vertex, against the labels; `rotation` maps the visits onto the labels' region order.
+inline void expect_transitions_match(const Case& c, const BoundaryLoop& loop,
+                                     const std::vector<Visit>& visits, int rotation,
+                                     const HoleLabels& labels,
+                                     const VertexOfPoint& complete_vertex) {
+  ASSERT_EQ(labels.transitions.size(), labels.k > 1 ? visits.size() : 0u);
+  for (std::size_t t = 0; t < labels.transitions.size(); ++t) {
+    const std::size_t from = (t + rotation) % visits.size();
+    const std::size_t to = (from + 1) % visits.size();
+    const auto h = loop.halfedges[visits[to].first];
+    const auto vertex = complete_vertex.at(key_of(c.input.point(c.input.from_vertex_handle(h))));
+    const auto convexity = convexity_at(c.complete, vertex, visits[from].region, visits[to].region);
+    ASSERT_TRUE(convexity.has_value()) << "no edge between the regions at transition " << t;
+    EXPECT_EQ(*convexity, labels.transitions[t]) << "transition " << t;
+  }
+}
+
+/// Every missing corner is a complete-mesh vertex the input lacks, with every face around
+/// it removed (`removed` by complete face index).
+inline void expect_missing_corners_removed(const Case& c, const HoleTruth& hole,
+                                           const VertexOfPoint& complete_vertex,
+                                           const std::vector<char>& removed) {
+  std::set<Key> input_points;
+  for (auto v : c.input.vertices())
+    input_points.insert(key_of(c.input.point(v)));
+  for (const Point& corner : hole.missing_corners) {
+    ASSERT_TRUE(complete_vertex.count(key_of(corner)));
+    EXPECT_FALSE(input_points.count(key_of(corner)));
+    for (auto f : c.complete.vf_range(complete_vertex.at(key_of(corner))))
+      EXPECT_TRUE(removed[f.idx()]);
+  }
 }
 
 }  // namespace holebench::generators::label_geometry

@@ -51,12 +51,7 @@ TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
     SCOPED_TRACE(descriptor.id);
     const HoleLabels& labels = *c.holes[0].labels;
     const auto& loop = loops[0];
-    std::map<Key, VertexHandle> complete_vertex;
-    for (auto v : c.complete.vertices())
-      complete_vertex[key_of(c.complete.point(v))] = v;
-    std::set<Key> input_points;
-    for (auto v : c.input.vertices())
-      input_points.insert(key_of(c.input.point(v)));
+    const VertexOfPoint complete_vertex = vertex_of_point(c.complete);
     std::vector<char> removed(c.complete.n_faces(), 0);
     for (int f : c.holes[0].removed_faces)
       removed[f] = 1;
@@ -83,17 +78,7 @@ TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
     const int rotation = rotation_of(regions, labels.regions);
     ASSERT_GE(rotation, 0) << "regions differ up to rotation: " << ::testing::PrintToString(regions)
                            << " vs " << ::testing::PrintToString(labels.regions);
-    ASSERT_EQ(labels.transitions.size(), labels.k > 1 ? regions.size() : 0u);
-    for (std::size_t t = 0; t < labels.transitions.size(); ++t) {
-      const std::size_t from = (t + rotation) % visits.size();
-      const std::size_t to = (from + 1) % visits.size();
-      const auto h = loop.halfedges[visits[to].first];
-      const auto vertex = complete_vertex.at(key_of(c.input.point(c.input.from_vertex_handle(h))));
-      const auto convexity =
-          convexity_at(c.complete, vertex, visits[from].region, visits[to].region);
-      ASSERT_TRUE(convexity.has_value()) << "no edge between the regions at transition " << t;
-      EXPECT_EQ(*convexity, labels.transitions[t]) << "transition " << t;
-    }
+    expect_transitions_match(c, loop, visits, rotation, labels, complete_vertex);
 
     // Inner: every removed face lies in the plane of one of the loop's regions.
     const auto planes = fit_region_planes(c.complete);
@@ -118,12 +103,7 @@ TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
                  std::to_string(worst / bounding_box_diagonal(c.complete)) + " diag");
     EXPECT_EQ(all_in_planes ? Orientation::Inner : Orientation::Outer, labels.orientation);
 
-    for (const Point& corner : c.holes[0].missing_corners) {
-      ASSERT_TRUE(complete_vertex.count(key_of(corner)));
-      EXPECT_FALSE(input_points.count(key_of(corner)));
-      for (auto f : c.complete.vf_range(complete_vertex.at(key_of(corner))))
-        EXPECT_TRUE(removed[f.idx()]);
-    }
+    expect_missing_corners_removed(c, c.holes[0], complete_vertex, removed);
     ++checked;
   }
   // The procedural solids alone give more than a dozen labelled holes (the CAD models more

@@ -54,12 +54,7 @@ TEST_P(BrepCases, LabelsAgreeWithTheGeometry) {
   EXPECT_EQ(c.input.n_faces() + removed_total, c.complete.n_faces());
 
   // Complete-mesh lookups by exact position (the input keeps the complete mesh's points).
-  std::map<Key, VertexHandle> complete_vertex;
-  for (auto v : c.complete.vertices())
-    complete_vertex[key_of(c.complete.point(v))] = v;
-  std::set<Key> input_points;
-  for (auto v : c.input.vertices())
-    input_points.insert(key_of(c.input.point(v)));
+  const VertexOfPoint complete_vertex = vertex_of_point(c.complete);
   std::vector<char> removed(c.complete.n_faces(), 0);
   for (const auto& hole : c.holes) {
     for (int f : hole.removed_faces)
@@ -84,17 +79,7 @@ TEST_P(BrepCases, LabelsAgreeWithTheGeometry) {
     ASSERT_GE(rotation, 0) << "regions differ up to rotation";
 
     // Transition convexity from the complete mesh's dihedral angle at the transition vertex.
-    ASSERT_EQ(labels.transitions.size(), labels.k > 1 ? regions.size() : 0u);
-    for (std::size_t t = 0; t < labels.transitions.size(); ++t) {
-      const std::size_t from = (t + rotation) % visits.size();
-      const std::size_t to = (from + 1) % visits.size();
-      const auto h = loop.halfedges[visits[to].first];
-      const auto vertex = complete_vertex.at(key_of(c.input.point(c.input.from_vertex_handle(h))));
-      const auto convexity =
-          convexity_at(c.complete, vertex, visits[from].region, visits[to].region);
-      ASSERT_TRUE(convexity.has_value()) << "no edge between the regions at transition " << t;
-      EXPECT_EQ(*convexity, labels.transitions[t]) << "transition " << t;
-    }
+    expect_transitions_match(c, loop, visits, rotation, labels, complete_vertex);
 
     // Orientation: inner iff every removed face touching the loop lies in the plane of one
     // of the regions along it.
@@ -139,12 +124,7 @@ TEST_P(BrepCases, LabelsAgreeWithTheGeometry) {
 
     // Missing corners: complete-model vertices that the input lacks, every face around them
     // removed.
-    for (const Point& corner : c.holes[i].missing_corners) {
-      ASSERT_TRUE(complete_vertex.count(key_of(corner)));
-      EXPECT_FALSE(input_points.count(key_of(corner)));
-      for (auto f : c.complete.vf_range(complete_vertex.at(key_of(corner))))
-        EXPECT_TRUE(removed[f.idx()]);
-    }
+    expect_missing_corners_removed(c, c.holes[i], complete_vertex, removed);
 
     // Size as CASES.md defines it, and the decision rule.
     std::vector<Point> points;
