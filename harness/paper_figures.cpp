@@ -56,6 +56,9 @@ std::filesystem::path figure_5(const FiguresOptions& options) {
   return path;
 }
 
+// The methods Table 2 of the slice paper compares (its columns).
+const std::vector<std::string> kTable2Methods = {"slice_loft", "slice_direct", "liepa_cgal"};
+
 double metric(const JobRecord& record, const std::string& name, bool& found) {
   for (const auto& m : record.metrics) {
     if (m.name == name) {
@@ -78,7 +81,7 @@ std::string cell(const std::vector<double>& values, const char* format = "{:.3e}
 
 // Table 2: per CAD model and noise level, the mean over the model's small holes.
 std::vector<std::filesystem::path> table_2(const ResultsData& data, const FiguresOptions& options) {
-  const std::vector<std::string> methods = {"slice_loft", "slice_direct", "liepa_cgal"};
+  const auto& methods = kTable2Methods;
   struct Row {
     std::vector<double> input_triangles, new_triangles;
     std::map<std::string, std::vector<double>> error;
@@ -187,7 +190,7 @@ std::vector<std::string> paper_figure_gaps(const ResultsData& data) {
   if (cad_methods.empty()) {
     gaps.push_back("no CAD records: Table 2 of the slice paper is empty");
   } else {
-    for (const char* method : {"slice_loft", "slice_direct", "liepa_cgal"}) {
+    for (const auto& method : kTable2Methods) {
       if (!cad_methods.count(method))
         gaps.push_back(fmt::format("no CAD records of {}: its Table 2 column is empty", method));
     }

@@ -60,25 +60,25 @@ TEST(Suite, UnlistedMetricsAreJudgedInTheDirectionTheirNameSays) {
   ASSERT_TRUE(listed.find("new_faces_count").has_value());
 }
 
+// A suite file with `text` is refused with an InvalidInputError that names `field`.
+void expect_refused(const std::filesystem::path& path, const std::string& text,
+                    const std::string& field) {
+  std::ofstream(path) << text;
+  try {
+    load_suite(path.string());
+    ADD_FAILURE() << "accepted: " << text;
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+  }
+}
+
 TEST(Suite, BadSuitesAreClearErrors) {
   EXPECT_THROW(load_suite("no_such_suite"), InvalidInputError);
   const auto path = std::filesystem::temp_directory_path() / "holebench_bad_suite.json";
-  std::ofstream(path) << "{\"cases\": []}";
-  try {
-    load_suite(path.string());
-    FAIL() << "an empty case list must be rejected";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("cases"), std::string::npos);
-  }
+  expect_refused(path, "{\"cases\": []}", "cases");
   std::ofstream(path) << "{not json";
   EXPECT_THROW(load_suite(path.string()), InvalidInputError);
-  std::ofstream(path) << "{\"cases\": [\"box/*\"], \"method_repetitions\": 0}";
-  try {
-    load_suite(path.string());
-    FAIL() << "zero method repetitions must be rejected";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("method_repetitions"), std::string::npos);
-  }
+  expect_refused(path, "{\"cases\": [\"box/*\"], \"method_repetitions\": 0}", "method_repetitions");
   std::ofstream(path) << "{\"cases\": [\"box/*\"], \"method_repetitions\": 5}";
   EXPECT_EQ(load_suite(path.string()).method_repetitions, 5);
 }
