@@ -1,6 +1,7 @@
 #include "harness/case_selection.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace holebench::harness {
@@ -43,6 +44,13 @@ bool names_a_skipped_model(const generators::CaseCatalog& catalog, const std::st
 }
 
 }  // namespace
+
+void print_skipped_models(const generators::CaseCatalog& catalog) {
+  for (const auto& skipped : catalog.skipped()) {
+    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
+                 skipped.reason.c_str());
+  }
+}
 
 std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
                                                      const std::vector<std::string>& patterns) {

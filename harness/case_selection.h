@@ -11,6 +11,9 @@ namespace holebench::harness {
 /// Whether `text` matches the wildcard `pattern` as a whole.
 bool wildcard_match(const std::string& pattern, const std::string& text);
 
+/// Prints each model the catalog skipped, with its reason, to stderr.
+void print_skipped_models(const generators::CaseCatalog& catalog);
+
 /// The catalog's cases matching any of `patterns`, in catalog order. An exact id or a
 /// pattern that matches nothing is an error (std::invalid_argument), so that a typo never
 /// silently runs nothing; except where it names a model the catalog skipped (a missing,

@@ -28,13 +28,6 @@ namespace {
 using holebench::generators::CaseCatalog;
 using holebench::generators::CatalogOptions;
 
-void print_skipped(const CaseCatalog& catalog) {
-  for (const auto& skipped : catalog.skipped()) {
-    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
-                 skipped.reason.c_str());
-  }
-}
-
 int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patterns, bool labels) {
   const auto selected = holebench::harness::select_cases(
       catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
@@ -44,7 +37,7 @@ int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patte
       extra = "  " + holebench::harness::labels_summary(catalog.make(c.id));
     fmt::print("{:<48} {}{}\n", c.id, c.description, extra);
   }
-  print_skipped(catalog);
+  holebench::harness::print_skipped_models(catalog);
   std::fprintf(stderr, "%zu cases\n", selected.size());
   return 0;
 }
@@ -58,7 +51,7 @@ int cases_export(const CaseCatalog& catalog, const std::vector<std::string>& pat
     holebench::harness::export_case(c, dir / holebench::harness::case_folder_name(c.id));
     std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, selected.size(), c.id.c_str());
   }
-  print_skipped(catalog);
+  holebench::harness::print_skipped_models(catalog);
   return 0;
 }
 

@@ -68,10 +68,7 @@ generators::CatalogOptions run_catalog_options(const RunOptions& options) {
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const generators::CaseCatalog catalog(run_catalog_options(options));
-  for (const auto& skipped : catalog.skipped()) {
-    std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
-                 skipped.reason.c_str());
-  }
+  print_skipped_models(catalog);
   const std::vector<Job> jobs = jobs_of_shard(plan_jobs(options, catalog), options.shard);
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;
