@@ -105,6 +105,10 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& s
           e.value("mean_error_bound_rel_diag", o.mean_error_bound_rel_diag);
       o.hole_mean_error_bound_rel_diag =
           e.value("hole_mean_error_bound_rel_diag", o.hole_mean_error_bound_rel_diag);
+      o.mean_relative_error_bound =
+          e.value("mean_relative_error_bound", o.mean_relative_error_bound);
+      o.mean_query_budget = e.value("mean_query_budget", o.mean_query_budget);
+      o.hole_mean_query_budget = e.value("hole_mean_query_budget", o.hole_mean_query_budget);
       o.self_intersections = e.value("self_intersections", o.self_intersections);
       o.arrow_field_of_view_degrees =
           e.value("arrow_field_of_view_degrees", o.arrow_field_of_view_degrees);

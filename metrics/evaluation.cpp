@@ -28,7 +28,7 @@ namespace {
 class Recorder {
  public:
   explicit Recorder(std::vector<MetricValue>& values) : values_(values) {}
-  void add(const char* name, double value) { values_.push_back({name, value}); }
+  void add(const std::string& name, double value) { values_.push_back({name, value}); }
   void add_flag(const char* name, bool value) { values_.push_back({name, value ? 1.0 : 0.0}); }
   void add_count(const char* name, std::size_t value) {
     values_.push_back({name, static_cast<double>(value)});
@@ -42,6 +42,15 @@ double fraction(std::size_t part, std::size_t whole) {
   return static_cast<double>(part) / static_cast<double>(whole);
 }
 
+// A distance with its interval: `<stem>_rel_diag` and, where the search gives one,
+// `<stem>_lower_rel_diag` / `<stem>_upper_rel_diag`.
+void add_interval(Recorder& out, const std::string& stem, const DistanceInterval& d,
+                  double diagonal) {
+  out.add(stem + "_rel_diag", d.value / diagonal);
+  out.add(stem + "_lower_rel_diag", d.lower / diagonal);
+  out.add(stem + "_upper_rel_diag", d.upper / diagonal);
+}
+
 void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                    double diagonal, const embree::TriangleScene& complete_scene,
                    const embree::TriangleScene& repaired_scene, Recorder& out) {
@@ -49,12 +58,16 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   SurfaceDistanceOptions whole;
   whole.hausdorff.error_bound = options.hausdorff_error_bound_rel_diag * diagonal;
   whole.mean.error_bound = options.mean_error_bound_rel_diag * diagonal;
+  whole.mean.relative_error_bound = options.mean_relative_error_bound;
+  whole.mean.query_budget = options.mean_query_budget;
+  whole.mean.coarse_error_bound = options.mean_coarse_error_bound_rel_diag * diagonal;
   const SurfaceDistance d =
       surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole);
-  out.add("hausdorff_rel_diag", d.hausdorff.lower() / diagonal);
-  out.add("hausdorff_upper_rel_diag", d.hausdorff.upper() / diagonal);
-  out.add("mean_distance_rel_diag", d.mean() / diagonal);
-  out.add("rms_distance_rel_diag", d.rms() / diagonal);
+  const DistanceSummary model = d.summary();
+  out.add("hausdorff_rel_diag", model.hausdorff.lower / diagonal);
+  out.add("hausdorff_upper_rel_diag", model.hausdorff.upper / diagonal);
+  add_interval(out, "mean_distance", model.mean, diagonal);
+  add_interval(out, "rms_distance", model.rms, diagonal);
 
   // The hole region: the patch against the complete model, and the removed faces of the
   // complete model against the repaired mesh.
@@ -67,29 +80,28 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   if (!removed.empty()) {
     SurfaceDistanceOptions hole_options = whole;
     hole_options.mean.error_bound = options.hole_mean_error_bound_rel_diag * diagonal;
+    hole_options.mean.query_budget = options.hole_mean_query_budget;
     const Mesh truth = face_subset(c.complete, removed);
     const auto truth_to_repaired_h =
         directed_hausdorff(truth, repaired_scene, hole_options.hausdorff);
     const auto truth_to_repaired_m =
         directed_mean_distance(truth, repaired_scene, hole_options.mean);
-    double lower = truth_to_repaired_h.lower, upper = truth_to_repaired_h.upper;
-    double mean = truth_to_repaired_m.mean, rms = truth_to_repaired_m.rms;
-    converged = converged && truth_to_repaired_h.converged && truth_to_repaired_m.converged;
+    DistanceSummary hole = distance_summary(truth_to_repaired_h, truth_to_repaired_m);
+    bool hole_converged = truth_to_repaired_h.converged && truth_to_repaired_m.converged;
     const std::vector<int> patch_faces = new_face_indices(repaired);
     if (!patch_faces.empty()) {
       const Mesh patch = face_subset(repaired, patch_faces);
       const auto h = directed_hausdorff(patch, complete_scene, hole_options.hausdorff);
       const auto m = directed_mean_distance(patch, complete_scene, hole_options.mean);
-      lower = std::max(lower, h.lower);
-      upper = std::max(upper, h.upper);
-      mean = std::max(mean, m.mean);
-      rms = std::max(rms, m.rms);
-      converged = converged && h.converged && m.converged;
+      hole = max_of(hole, distance_summary(h, m));
+      hole_converged = hole_converged && h.converged && m.converged;
     }
-    out.add("hole_hausdorff_rel_diag", lower / diagonal);
-    out.add("hole_hausdorff_upper_rel_diag", upper / diagonal);
-    out.add("hole_mean_distance_rel_diag", mean / diagonal);
-    out.add("hole_rms_distance_rel_diag", rms / diagonal);
+    converged = converged && hole_converged;
+    out.add_flag("hole_distance_converged_ok", hole_converged);
+    out.add("hole_hausdorff_rel_diag", hole.hausdorff.lower / diagonal);
+    out.add("hole_hausdorff_upper_rel_diag", hole.hausdorff.upper / diagonal);
+    add_interval(out, "hole_mean_distance", hole.mean, diagonal);
+    add_interval(out, "hole_rms_distance", hole.rms, diagonal);
   }
   out.add_flag("distance_converged_ok", converged);
 

@@ -23,10 +23,23 @@ struct MetricValue {
 struct EvaluationOptions {
   /// Error bound of the Hausdorff distances, relative to the complete model's diagonal.
   double hausdorff_error_bound_rel_diag = 1e-4;
-  /// Error bound of the mean and RMS distances over the whole model (relative).
-  double mean_error_bound_rel_diag = 1e-3;
-  /// Error bound of the mean and RMS distances over the hole region (relative).
-  double hole_mean_error_bound_rel_diag = 1e-3;
+  /// Mean and RMS distances: each is reported with an interval [lower, upper] whose
+  /// half-width is at most the larger of this absolute bound (relative to the diagonal) and
+  /// `mean_relative_error_bound` times the lower end. Whole model:
+  double mean_error_bound_rel_diag = 1e-5;
+  /// ... and over the hole region:
+  double hole_mean_error_bound_rel_diag = 1e-5;
+  /// ... and the relative part of both (0.01: the estimate within 1 % of the truth).
+  double mean_relative_error_bound = 0.01;
+  /// Work limits of the mean/RMS searches (closest-point queries per direction), whole model
+  /// and hole region. Past its budget a search stops as soon as each half-width is within
+  /// `mean_coarse_error_bound_rel_diag`; its interval still holds but is wider than the
+  /// bounds above, and `distance_converged_ok` (for the hole region also
+  /// `hole_distance_converged_ok`) is 0. Under noise the whole model's distance is a rough
+  /// field over every face, and its search stops there on most jobs.
+  std::size_t mean_query_budget = 2'000;
+  std::size_t hole_mean_query_budget = 50'000;
+  double mean_coarse_error_bound_rel_diag = 1e-3;
   /// Feature recovery: spacing of the samples on a missing edge, the distance within which
   /// a repaired sharp edge covers a sample, and the radius of "near" (all relative).
   double edge_sample_spacing_rel_diag = 1e-3;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <queue>
 #include <vector>
@@ -93,15 +94,121 @@ double triangle_triangle_distance(const std::array<Point, 3>& a, const std::arra
   return best;
 }
 
+// For a unit direction n, the affine l(x) = n.x - max over T's corners of n.v is at most
+// dist(x, T): T lies in the half-space n.y <= max n.v.
+struct HalfSpaceBound {
+  Point normal;
+  double offset = 0.0;
+  double operator()(const Point& x) const { return OpenMesh::dot(normal, x) - offset; }
+};
+HalfSpaceBound half_space_bound(const Point& normal, const std::array<Point, 3>& t) {
+  double offset = -std::numeric_limits<double>::infinity();
+  for (const Point& v : t)
+    offset = std::max(offset, OpenMesh::dot(normal, v));
+  return {normal, offset};
+}
+
+// The mean over a triangle of a linear function with corner values v, and of its square.
+double linear_mean(const std::array<double, 3>& v) {
+  return (v[0] + v[1] + v[2]) / 3.0;
+}
+double linear_square_mean(const std::array<double, 3>& v) {
+  return (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[0] * v[1] + v[1] * v[2] + v[2] * v[0]) / 6.0;
+}
+
+// The mean over a triangle of max(0, L)^power (power 1 or 2), L linear with corner values v.
+// With one positive corner v0 (v1, v2 <= 0) the positive part lives on the sub-triangle at
+// v0 cut where L = 0, a share v0^2 / ((v0 - v1)(v0 - v2)) of the area, on which L runs
+// linearly from v0 to 0 and 0: its mean there is v0 / 3, of its square v0^2 / 6. Two
+// positive corners: the whole minus the negative part, which has one.
+double positive_part_mean(std::array<double, 3> v, int power) {
+  std::sort(v.begin(), v.end(), std::greater<>());
+  if (v[2] >= 0.0)
+    return power == 1 ? linear_mean(v) : linear_square_mean(v);
+  if (v[0] <= 0.0)
+    return 0.0;
+  if (v[1] <= 0.0) {
+    const double share = v[0] * v[0] / ((v[0] - v[1]) * (v[0] - v[2]));
+    return share * (power == 1 ? v[0] / 3.0 : v[0] * v[0] / 6.0);
+  }
+  const double negative = positive_part_mean({-v[2], -v[1], -v[0]}, power);
+  return std::max(0.0, power == 1 ? linear_mean(v) + negative : linear_square_mean(v) - negative);
+}
+
+// The mean of |L| over a triangle, L linear with corner values v.
+double absolute_mean(const std::array<double, 3>& v) {
+  return positive_part_mean(v, 1) + positive_part_mean({-v[0], -v[1], -v[2]}, 1);
+}
+
+// The plane of a triangle as a unit normal and a point; nullopt for a degenerate triangle.
+struct Plane {
+  Point normal;
+  Point origin;
+  double signed_distance(const Point& x) const { return OpenMesh::dot(normal, x - origin); }
+};
+bool plane_of(const std::array<Point, 3>& t, Plane& plane) {
+  const Point n = OpenMesh::cross(t[1] - t[0], t[2] - t[0]);
+  const double length = n.norm();
+  if (!(length > 0.0))
+    return false;
+  plane = {n / length, t[0]};
+  return true;
+}
+
+// 2D polygons for the cover test: a convex polygon clipped by a triangle (Sutherland-Hodgman).
+struct Point2 {
+  double x = 0.0, y = 0.0;
+};
+using Polygon2 = std::vector<Point2>;
+
+double cross2(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+double polygon_area(const Polygon2& p) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point2& a = p[i];
+    const Point2& b = p[(i + 1) % p.size()];
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return 0.5 * std::abs(twice);
+}
+
+// The part of convex `subject` inside triangle t (either orientation).
+Polygon2 clip_to_triangle(Polygon2 subject, std::array<Point2, 3> t) {
+  if (cross2(t[0], t[1], t[2]) < 0.0)
+    std::swap(t[1], t[2]);
+  for (int e = 0; e < 3 && !subject.empty(); ++e) {
+    const Point2 a = t[e], b = t[(e + 1) % 3];
+    Polygon2 kept;
+    for (std::size_t i = 0; i < subject.size(); ++i) {
+      const Point2& p = subject[i];
+      const Point2& q = subject[(i + 1) % subject.size()];
+      const double sp = cross2(a, b, p), sq = cross2(a, b, q);
+      if (sp >= 0.0)
+        kept.push_back(p);
+      if ((sp >= 0.0) != (sq >= 0.0)) {
+        const double s = sp / (sp - sq);
+        kept.push_back({p.x + s * (q.x - p.x), p.y + s * (q.y - p.y)});
+      }
+    }
+    subject = std::move(kept);
+  }
+  return subject;
+}
+
 // A (sub)triangle of A with bounds on the mean of d(x, B) and of d(x, B)^2 over it.
 struct Cell {
   std::array<Point, 3> corners;
   std::array<double, 3> corner_distance;
   std::array<int, 3> corner_face = {-1, -1, -1};  // faces of B nearest to the corners
   double area = 0.0;
+  double hi = 0.0;                          // pointwise: d <= hi on the cell
   double mean_lo = 0.0, mean_hi = 0.0;      // bounds of the cell's mean of d
   double square_lo = 0.0, square_hi = 0.0;  // bounds of the cell's mean of d^2
   double key = 0.0;                         // its share of the errors: split the largest
+  bool planes_tried = false;                // the plane bounds (tighten()) are in
   std::size_t order = 0;                    // creation order: deterministic ties
 };
 
@@ -116,6 +223,8 @@ struct CellOrder {
 // The errors of the estimates from the sums of area-weighted bound widths.
 struct Estimate {
   double mean = 0.0, mean_error = 0.0, rms = 0.0, rms_error = 0.0;
+  double mean_lower() const { return std::max(0.0, mean - mean_error); }
+  double rms_lower() const { return std::max(0.0, rms - rms_error); }
 };
 
 Estimate estimate(double area, double sum_mean, double sum_mean_width, double sum_square,
@@ -184,14 +293,20 @@ class MeanSearch {
       prepare(cell);
     queue_ = Queue(CellOrder{}, std::move(initial));
     while (!queue_.empty() && !within_bound()) {
-      if (result_.queries >= options_.max_queries) {
+      if (result_.queries >= options_.max_queries ||
+          (result_.queries >= options_.query_budget && within_coarse_bound())) {
         result_.converged = false;
         break;
       }
       Cell cell = queue_.top();
       queue_.pop();
       remove_sums(cell);
-      split(cell);
+      if (!cell.planes_tried) {
+        tighten(cell);  // exact where B is flat under the cell: often no split needed
+        enqueue(std::move(cell));
+      } else {
+        split(cell);
+      }
     }
     // Final sums from the cells themselves (no drift from the running sums).
     sum_mean_ = sum_mean_width_ = sum_square_ = sum_square_width_ = 0.0;
@@ -204,10 +319,13 @@ class MeanSearch {
     result_.area = total_area_;
     result_.mean = e.mean;
     result_.mean_error = e.mean_error;
+    result_.mean_lower = e.mean_lower();
+    result_.mean_upper = e.mean + e.mean_error;
     result_.rms = e.rms;
     result_.rms_error = e.rms_error;
-    result_.converged = result_.converged && e.mean_error <= options_.error_bound &&
-                        e.rms_error <= options_.error_bound;
+    result_.rms_lower = e.rms_lower();
+    result_.rms_upper = e.rms + e.rms_error;
+    result_.converged = result_.converged && within_bound(e);
     return result_;
   }
 
@@ -218,9 +336,20 @@ class MeanSearch {
   }
 
   bool within_bound() const {
+    return within_bound(
+        estimate(total_area_, sum_mean_, sum_mean_width_, sum_square_, sum_square_width_));
+  }
+  bool within_coarse_bound() const {
     const Estimate e =
         estimate(total_area_, sum_mean_, sum_mean_width_, sum_square_, sum_square_width_);
-    return e.mean_error <= options_.error_bound && e.rms_error <= options_.error_bound;
+    return e.mean_error <= options_.coarse_error_bound &&
+           e.rms_error <= options_.coarse_error_bound;
+  }
+  // Each half-width within max(relative bound x its lower end, absolute bound).
+  bool within_bound(const Estimate& e) const {
+    const double rel = options_.relative_error_bound;
+    return e.mean_error <= std::max(rel * e.mean_lower(), options_.error_bound) &&
+           e.rms_error <= std::max(rel * e.rms_lower(), options_.error_bound);
   }
 
   void add_sums(const Cell& cell, double sign) {
@@ -292,7 +421,8 @@ class MeanSearch {
       const auto f = corner_distances_to(c, face);
       hi = std::min(hi, std::max({f[0], f[1], f[2]}));
       mean_hi = std::min(mean_hi, (f[0] + f[1] + f[2]) / 3.0);
-      square_hi = std::min(square_hi, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / 3.0);
+      // f_T <= its linear interpolant (convex), both >= 0: f_T^2 <= the interpolant squared.
+      square_hi = std::min(square_hi, linear_square_mean(f));
     }
     // The exact minimum over the cell where the cell may touch B (there the distance has
     // a kink that no smooth bound follows): its distance to the triangles of B within
@@ -308,6 +438,7 @@ class MeanSearch {
       lo = std::max(lo, minimum);
     }
     hi = std::max(lo, hi);
+    cell.hi = hi;
     // Second order (semiconcavity): |x|^2 - d(x)^2 = max over y of B of (2 x.y - |y|^2) is
     // convex, so with barycentric weights l_i of x,
     //   d(x)^2 >= sum l_i d_i^2 - sum l_i |c_i - x|^2,
@@ -332,6 +463,136 @@ class MeanSearch {
       cell.mean_lo = cell.mean_hi = 0.5 * (cell.mean_lo + cell.mean_hi);
     if (cell.square_lo > cell.square_hi)
       cell.square_lo = cell.square_hi = 0.5 * (cell.square_lo + cell.square_hi);
+  }
+
+  // Lower bounds from the planes of the triangles of B that can hold a closest point of a
+  // point x of the cell: for x in the cell, d(x) <= hi and |x - g| <= R (g the centroid, R
+  // the farthest corner), so its closest point lies within hi + R of g. For each such
+  // triangle T, d(x) = dist(x, T) >= |a_T(x)| with a_T the signed distance to T's plane.
+  //  - One plane P (that of the triangle nearest to a corner) with every candidate within
+  //    a slab |a_P| <= e: d >= |a_P| - e and d^2 >= a_P^2 - 2 e |a_P|, whose cell means are
+  //    closed forms of the corner values of a_P. Exact (e = 0) where B is flat there.
+  //  - Several planes (a sharp edge or a curved region of B): m(x) = min over T of s_T a_T(x),
+  //    s_T the sign at g, is concave and m <= d, so the cell mean of d is at least the corner
+  //    mean of m, and d^2 >= max(0, L)^2 with L the linear interpolant of m's corner values.
+  void tighten(Cell& cell) {
+    cell.planes_tried = true;  // enqueue() counts the candidates' search as one query
+    const auto& c = cell.corners;
+    const Point g = (c[0] + c[1] + c[2]) / 3.0;
+    double radius = 0.0;
+    for (const Point& corner : c)
+      radius = std::max(radius, (corner - g).norm());
+    // A triangle farther than hi from the whole cell holds no closest point of it.
+    const std::vector<int> candidates = scene_.faces_within(g, cell.hi + radius);
+    if (candidates.empty())
+      return;
+    Plane reference;
+    bool has_reference = false;
+    for (int face :
+         {cell.corner_face[0], cell.corner_face[1], cell.corner_face[2], candidates.front()}) {
+      if (face >= 0 && std::binary_search(candidates.begin(), candidates.end(), face) &&
+          plane_of(scene_.triangle_of_face(face), reference)) {
+        has_reference = true;
+        break;
+      }
+    }
+    double slab = 0.0;
+    bool every_plane = true;
+    std::array<double, 3> m = {std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity()};
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const auto& t = scene_.triangle_of_face(candidates[k]);
+      if (has_reference) {
+        for (const Point& p : t)
+          slab = std::max(slab, std::abs(reference.signed_distance(p)));
+      }
+      // Two half-spaces that hold T: the side of its plane away from the centroid, and the
+      // one through T's point nearest to the centroid facing it (the tangent of dist(., T)
+      // at the centroid); the one higher on the cell's corners serves.
+      std::array<double, 3> best = {-std::numeric_limits<double>::infinity(),
+                                    -std::numeric_limits<double>::infinity(),
+                                    -std::numeric_limits<double>::infinity()};
+      const auto offer = [&](const Point& normal) {
+        const HalfSpaceBound l = half_space_bound(normal, t);
+        const std::array<double, 3> v = {l(c[0]), l(c[1]), l(c[2])};
+        if (v[0] + v[1] + v[2] > best[0] + best[1] + best[2])
+          best = v;
+      };
+      Plane plane;
+      if (plane_of(t, plane))
+        offer(plane.signed_distance(g) < 0.0 ? -plane.normal : plane.normal);
+      const Point towards = g - embree::closest_point_on_triangle(g, t[0], t[1], t[2]);
+      if (towards.norm() > 0.0)
+        offer(towards / towards.norm());
+      if (!std::isfinite(best[0])) {
+        every_plane = false;
+        continue;
+      }
+      for (int i = 0; i < 3; ++i)
+        m[i] = std::min(m[i], best[i]);
+    }
+    double mean_lo = 0.0, square_lo = 0.0;
+    if (has_reference) {
+      const std::array<double, 3> a = {reference.signed_distance(c[0]),
+                                       reference.signed_distance(c[1]),
+                                       reference.signed_distance(c[2])};
+      const double mean_abs = absolute_mean(a);
+      mean_lo = std::max(mean_lo, mean_abs - slab);
+      square_lo = std::max(square_lo, linear_square_mean(a) - 2.0 * slab * mean_abs);
+    }
+    if (every_plane) {
+      mean_lo = std::max(mean_lo, linear_mean(m));
+      square_lo = std::max(square_lo, positive_part_mean(m, 2));
+    }
+    cell.mean_lo = std::max(cell.mean_lo, mean_lo);
+    cell.square_lo = std::max(cell.square_lo, square_lo);
+    if (has_reference && slab <= 1e-6 * options_.error_bound &&
+        covered_by(c, reference, candidates)) {
+      // Every point x of the cell lies above a point y of B within the slab: d(x) <= |x - y|
+      // <= |a_P(x)| + e, so the means are within e of the closed forms (exact where e = 0).
+      const std::array<double, 3> a = {reference.signed_distance(c[0]),
+                                       reference.signed_distance(c[1]),
+                                       reference.signed_distance(c[2])};
+      const double mean_abs = absolute_mean(a);
+      // (+ what an uncovered sliver of at most 2e-9 of the cell could add, at most hi there.)
+      cell.mean_hi = std::min(cell.mean_hi, mean_abs + slab + 2e-9 * cell.hi);
+      cell.square_hi = std::min(cell.square_hi, linear_square_mean(a) + 2.0 * slab * mean_abs +
+                                                    slab * slab + 2e-9 * cell.hi * cell.hi);
+    }
+    // Rounding may cross the bounds by an ulp: then they meet.
+    if (cell.mean_lo > cell.mean_hi)
+      cell.mean_lo = cell.mean_hi = 0.5 * (cell.mean_lo + cell.mean_hi);
+    if (cell.square_lo > cell.square_hi)
+      cell.square_lo = cell.square_hi = 0.5 * (cell.square_lo + cell.square_hi);
+  }
+
+  // Whether the cell's projection onto P is covered by the candidates' projections: the
+  // area of the projected cell equals the sum of its overlaps with each candidate. The
+  // triangles of a mesh do not overlap, so the sum counts each covered point once; a sum
+  // larger than the area (overlapping candidates) is not taken as covered.
+  bool covered_by(const std::array<Point, 3>& c, const Plane& plane,
+                  const std::vector<int>& candidates) const {
+    const Point& n = plane.normal;
+    const Point u = (std::abs(n[0]) < 0.6 ? OpenMesh::cross(n, Point(1.0, 0.0, 0.0))
+                                          : OpenMesh::cross(n, Point(0.0, 1.0, 0.0)))
+                        .normalized();
+    const Point v = OpenMesh::cross(n, u);
+    const auto to_plane = [&](const Point& p) {
+      const Point d = p - plane.origin;
+      return Point2{OpenMesh::dot(d, u), OpenMesh::dot(d, v)};
+    };
+    const Polygon2 cell = {to_plane(c[0]), to_plane(c[1]), to_plane(c[2])};
+    const double area = polygon_area(cell);
+    if (!(area > 0.0))
+      return false;
+    double covered = 0.0;
+    for (int face : candidates) {
+      const auto& t = scene_.triangle_of_face(face);
+      covered +=
+          polygon_area(clip_to_triangle(cell, {to_plane(t[0]), to_plane(t[1]), to_plane(t[2])}));
+    }
+    return covered >= area * (1.0 - 1e-9) && covered <= area * (1.0 + 1e-9);
   }
 
   void split(const Cell& cell) {
@@ -381,6 +642,43 @@ DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::Triangl
                                             const MeanDistanceOptions& options,
                                             const KnownDistances& known) {
   return MeanSearch(b_scene, options).run(a, known);
+}
+
+namespace {
+
+// Each interval's ends ordered (rounding may cross them by an ulp) and its value inside.
+void settle(DistanceInterval& d) {
+  d.lower = std::max(0.0, d.lower);
+  if (d.lower > d.upper)
+    d.lower = d.upper = 0.5 * (d.lower + d.upper);
+  d.value = std::clamp(d.value, d.lower, d.upper);
+}
+
+}  // namespace
+
+DistanceSummary distance_summary(const DirectedHausdorff& hausdorff,
+                                 const DirectedMeanDistance& mean) {
+  DistanceSummary s;
+  s.hausdorff = {hausdorff.lower, hausdorff.lower, hausdorff.upper};
+  s.rms = {mean.rms_lower, mean.rms, mean.rms_upper};
+  s.mean = {mean.mean_lower, mean.mean, mean.mean_upper};
+  settle(s.hausdorff);
+  // True values: mean <= RMS (Jensen) <= Hausdorff (the largest distance).
+  s.rms.upper = std::min(s.rms.upper, s.hausdorff.upper);
+  s.rms.lower = std::max(s.rms.lower, s.mean.lower);
+  settle(s.rms);
+  s.mean.upper = std::min(s.mean.upper, s.rms.upper);
+  settle(s.mean);
+  s.mean.value = std::min(s.mean.value, s.rms.value);
+  return s;
+}
+
+DistanceSummary max_of(const DistanceSummary& a, const DistanceSummary& b) {
+  const auto larger = [](const DistanceInterval& x, const DistanceInterval& y) {
+    return DistanceInterval{std::max(x.lower, y.lower), std::max(x.value, y.value),
+                            std::max(x.upper, y.upper)};
+  };
+  return {larger(a.mean, b.mean), larger(a.rms, b.rms), larger(a.hausdorff, b.hausdorff)};
 }
 
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,

@@ -18,19 +18,28 @@
 //    semiconcave), so d(x)^2 >= sum l_i d_i^2 - sum l_i |c_i - x|^2 (l_i barycentric), whose
 //    cell mean is mean(d_i^2) - V with V = sum |c_i - g|^2 / 4; and the mean of d is at least
 //    mean(d_i) - V / min(d_i). These shrink with the square of the cell size.
-// The mean is the sum of the cells' mid-bounds (error: half the area-weighted width), the
-// RMS the square root of the mean-square's mid-bound (error: half the width of the roots of
-// its interval). The cell with the largest share of the errors is split in four until both
-// are within the error bound. Closest points come from Embree (rtcPointQuery) with an upper
-// bound on each answer, ties broken by face index: the same inputs give the same numbers on
-// every run.
+//  - exact where the distance is affine: every triangle of B that can hold a closest point
+//    of the cell (within its pointwise upper bound plus its radius) lies within a slab of
+//    half-width e about one plane P, so d >= |a_P| - e with a_P the signed distance to P,
+//    whose mean (and the mean of a_P^2) over the cell is computed in closed form; and
+//    min over those triangles T of s_T a_T (s_T = +-1) is concave, so its mean is at least
+//    its corner mean (several planes, as at a sharp edge). From above, f_T <= its linear
+//    interpolant on the cell, so the mean of f_T^2 is at most the mean of that interpolant
+//    squared. Where B is flat under the cell the two sides meet.
+// Each direction reports an interval [lower, upper] of the mean and of the RMS, and an
+// estimate inside it (the midpoint). The cell with the largest share of the widths is split
+// in four (after its exact bounds have been tried) until each half-width is within
+// max(relative_error_bound x lower end, error_bound). distance_summary() then clamps the
+// intervals by what holds for true values, mean <= RMS <= Hausdorff, so the reported numbers
+// never contradict each other.
 #pragma once
 
 #include "core/mesh.h"
 #include "metrics/hausdorff_distance.h"
 
+#include <algorithm>
 #include <cstddef>
-#include <optional>
+#include <limits>
 
 namespace holebench {
 
@@ -39,19 +48,33 @@ class TriangleScene;
 }
 
 struct MeanDistanceOptions {
-  /// Absolute bound on the error of both the mean and the RMS distance, in model units.
-  double error_bound = 1e-3;
-  /// Stop after this many closest-point queries (then `converged` = false and the bounds
-  /// are the ones reached).
+  /// Absolute bound on the error of the mean and the RMS (half the width of each interval),
+  /// in model units (callers pass a fraction of the diagonal).
+  double error_bound = 1e-5;
+  /// Relative bound: the search also stops a value once its half-width is at most this
+  /// fraction of its lower end. The bound met is the larger of the two.
+  double relative_error_bound = 0.01;
+  /// Work limit: past this many closest-point queries the search stops as soon as each
+  /// half-width is within `coarse_error_bound` (then `converged` = false: the interval holds
+  /// but is wider than the bounds above).
+  std::size_t query_budget = 8'000'000;
+  /// The half-width every search reaches, budget or not (model units).
+  double coarse_error_bound = std::numeric_limits<double>::infinity();
+  /// Stop after this many closest-point queries whatever the widths (then `converged` =
+  /// false and the bounds are the ones reached).
   std::size_t max_queries = 8'000'000;
 };
 
 struct DirectedMeanDistance {
-  double mean = 0.0;        ///< estimate of m(A, B)
-  double mean_error = 0.0;  ///< |mean - m(A, B)| <= mean_error
-  double rms = 0.0;         ///< estimate of r(A, B)
-  double rms_error = 0.0;   ///< |rms - r(A, B)| <= rms_error
-  double area = 0.0;        ///< area of A
+  double mean = 0.0;        ///< estimate of m(A, B), in [mean_lower, mean_upper]
+  double mean_lower = 0.0;  ///< m(A, B) >= mean_lower
+  double mean_upper = 0.0;  ///< m(A, B) <= mean_upper
+  double mean_error = 0.0;  ///< |mean - m(A, B)| <= mean_error (half the interval)
+  double rms = 0.0;         ///< estimate of r(A, B), in [rms_lower, rms_upper]
+  double rms_lower = 0.0;
+  double rms_upper = 0.0;
+  double rms_error = 0.0;  ///< |rms - r(A, B)| <= rms_error
+  double area = 0.0;       ///< area of A
   std::size_t queries = 0;
   bool converged = true;
 };
@@ -61,6 +84,32 @@ struct DirectedMeanDistance {
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
                                             const MeanDistanceOptions& options = {},
                                             const KnownDistances& known = {});
+
+/// A value with a guaranteed interval: lower <= true value <= upper, value in between.
+struct DistanceInterval {
+  double lower = 0.0;
+  double value = 0.0;
+  double upper = 0.0;
+};
+
+/// Mean, RMS and Hausdorff distance of one comparison, each with its interval, clamped by
+/// the relations of the true values (0 <= mean <= RMS <= Hausdorff): mean.upper <=
+/// rms.upper <= hausdorff.upper, rms.lower >= mean.lower, and the values too satisfy
+/// mean.value <= rms.value <= hausdorff.upper. The Hausdorff value is its lower end (a
+/// distance attained at a point).
+struct DistanceSummary {
+  DistanceInterval mean;
+  DistanceInterval rms;
+  DistanceInterval hausdorff;
+};
+
+/// One direction's summary from its Hausdorff and mean searches (the same A and B).
+DistanceSummary distance_summary(const DirectedHausdorff& hausdorff,
+                                 const DirectedMeanDistance& mean);
+
+/// The larger of two summaries, interval by interval (the symmetric distances are the larger
+/// of the two directions): the relations above still hold.
+DistanceSummary max_of(const DistanceSummary& a, const DistanceSummary& b);
 
 struct SurfaceDistanceOptions {
   HausdorffOptions hausdorff;  ///< error bound of the Hausdorff distance (model units)
@@ -72,9 +121,14 @@ struct SurfaceDistance {
   HausdorffResult hausdorff;
   DirectedMeanDistance a_to_b;
   DirectedMeanDistance b_to_a;
-  double mean() const { return std::max(a_to_b.mean, b_to_a.mean); }
+  /// The symmetric values with their clamped intervals.
+  DistanceSummary summary() const {
+    return max_of(distance_summary(hausdorff.a_to_b, a_to_b),
+                  distance_summary(hausdorff.b_to_a, b_to_a));
+  }
+  double mean() const { return summary().mean.value; }
   double mean_error() const { return std::max(a_to_b.mean_error, b_to_a.mean_error); }
-  double rms() const { return std::max(a_to_b.rms, b_to_a.rms); }
+  double rms() const { return summary().rms.value; }
   double rms_error() const { return std::max(a_to_b.rms_error, b_to_a.rms_error); }
   bool converged() const { return hausdorff.converged() && a_to_b.converged && b_to_a.converged; }
 };

@@ -59,6 +59,7 @@ TEST(MeanDistance, OneSidedIntegralsMatchTheAnalyticValues) {
   for (double bound : {1e-2, 1e-3}) {
     MeanDistanceOptions options;
     options.error_bound = bound;
+    options.relative_error_bound = 0.0;  // the absolute bound alone
     const auto d = directed_mean_distance(full, part_scene, options);
     ASSERT_TRUE(d.converged);
     EXPECT_LE(d.rms_error, bound);
@@ -95,6 +96,7 @@ TEST(MeanDistance, CurvedDistanceFieldMatchesAnIndependentIntegral) {
   for (double bound : {1e-2, 1e-3, 1e-4}) {
     MeanDistanceOptions options;
     options.error_bound = bound;
+    options.relative_error_bound = 0.0;  // the absolute bound alone
     const auto d = directed_mean_distance(grid, target_scene, options);
     ASSERT_TRUE(d.converged);
     EXPECT_LE(d.mean_error, bound);
