@@ -13,6 +13,7 @@
 #include "harness/shard_status.h"
 #include "harness/slurm_submit.h"
 #include "harness/suite.h"
+#include "harness/validate_results.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
@@ -74,6 +75,22 @@ void print_summary_table(const holebench::harness::RunSummary& summary) {
   fmt::print("\n{} jobs, {} not ok, {:.1f} s. Results: {} and {}\n", summary.records.size(),
              summary.failures, summary.seconds, summary.results_json.string(),
              summary.results_csv.string());
+}
+
+// holebench validate: each violation on its own line, then "N records, M violations"; exit
+// code 0 if none, 1 on a violation, 2 when a file cannot be read as a results file.
+int validate_command(const std::vector<std::filesystem::path>& files) {
+  holebench::harness::ValidationReport report;
+  try {
+    report = holebench::harness::validate_results_files(files);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "holebench validate: {}\n", e.what());
+    return 2;
+  }
+  for (const auto& violation : report.violations)
+    fmt::print("{}\n", holebench::harness::format_violation(violation));
+  fmt::print("{}\n", holebench::harness::format_validation_summary(report));
+  return report.ok() ? 0 : 1;
 }
 
 void add_catalog_options(CLI::App* command, CatalogOptions& catalog, bool& no_cad) {
@@ -335,6 +352,17 @@ int main(int argc, char** argv) {
                       "new results' context; without one, the built-in defaults)");
   compare->add_option("--junit", junit_path, "Also write a JUnit XML file for CI dashboards");
 
+  std::vector<std::filesystem::path> validate_files;
+  auto* validate = app.add_subcommand(
+      "validate",
+      "Check results files record by record: required fields, unique job ids, every metric a "
+      "finite number in its range (_fraction, _ok/is_ flags, _count), lower <= value <= upper, "
+      "mean <= RMS <= Hausdorff upper, no open hole in an ok job (docs/results.md). Prints each "
+      "violation with its job id and a summary; exit code 0 if none, 1 on a violation, 2 on an "
+      "unreadable file");
+  validate->add_option("results", validate_files, "results.json files (job ids unique across them)")
+      ->required();
+
   holebench::harness::FiguresOptions figures_options;
   std::filesystem::path figures_results;
   auto* figures = app.add_subcommand(
@@ -545,6 +573,8 @@ int main(int argc, char** argv) {
         holebench::harness::write_junit_xml(comparison, junit_path);
       return comparison.has_regression() ? 1 : 0;
     }
+    if (validate->parsed())
+      return validate_command(validate_files);
     if (figures->parsed()) {
       if (!figures_results.empty())
         figures_options.results = figures_results;
