@@ -4,6 +4,7 @@
 #include "harness/case_gallery.h"
 #include "harness/case_selection.h"
 #include "harness/compare.h"
+#include "harness/output_folder_lock.h"
 #include "harness/paper_figures.h"
 #include "harness/report/report.h"
 #include "harness/results_reader.h"
@@ -197,7 +198,10 @@ int main(int argc, char** argv) {
       "run",
       "Run a suite (or cases x methods x users x noise x seeds) into a folder; each job in "
       "its own process, in parallel");
-  run->add_option("--out", run_options.out_dir, "Output folder (created if missing)")->required();
+  run->add_option("--out", run_options.out_dir,
+                  "Output folder (created if missing). One holebench process at a time: while a "
+                  "run or merge holds it (DIR/.holebench.lock), another exits with code 2")
+      ->required();
   run->add_option("--suite", suite_name,
                   "Suite name (suites/<name>.json: smoke, default, nightly, paper) or path; the "
                   "options below, where given, override it");
@@ -260,7 +264,7 @@ int main(int argc, char** argv) {
   merge_inputs_option->excludes(merge_shards_option);
   merge->add_option("--out", merge_out,
                     "Output folder for the merged results.json and results.csv (with --shards, "
-                    "default: the sharded run's folder)");
+                    "default: the sharded run's folder); locked while merging, like run's --out");
   merge->add_flag("--allow-incomplete", merge_allow_incomplete,
                   "With --shards: merge the records there are even if shards are not complete");
 
@@ -479,6 +483,7 @@ int main(int argc, char** argv) {
                      "holebench merge: give results.json files and --out, or --shards DIR\n");
         return 2;
       }
+      const holebench::harness::OutputFolderLock lock(merge_out);
       std::vector<holebench::harness::ResultsData> sets;
       for (const auto& path : merge_inputs) {
         sets.push_back(holebench::harness::read_results_json(path));
@@ -607,6 +612,11 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
+  } catch (const holebench::harness::OutputFolderInUse& e) {
+    // holebench run / merge: another process writes the folder.
+    std::fprintf(stderr, "holebench %s: %s\n", app.get_subcommands().front()->get_name().c_str(),
+                 e.what());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "holebench: %s\n", e.what());
     return 2;
