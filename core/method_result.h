@@ -39,6 +39,11 @@ struct HoleReport {
   /// For methods that guide the user instead of (or before) closing.
   std::optional<GuidanceArrow> arrow;
   std::string note;  ///< what went wrong, or what the method decided
+  /// Empty when the method's own path (its paper's steps) handled the hole; otherwise the
+  /// short, stable snake_case name of what stood in for it (e.g. "cgal_triangulate_hole"),
+  /// whether or not the stand-in closed the hole (see `closed`). The names, by method, are in
+  /// docs/results.md; `note` keeps the free-text reason.
+  std::string fallback;
   double seconds = 0.0;
 };
 

@@ -51,6 +51,7 @@ void copy_holes(const MethodResult& result, JobRecord& record) {
     h.closed = hole.closed;
     h.new_faces = hole.new_faces;
     h.note = hole.note;
+    h.fallback = hole.fallback;
     h.centroid = hole.centroid;
     h.arrow = hole.arrow;
     h.classification = hole.classification;

@@ -41,6 +41,7 @@ struct HoleRecord {
   bool closed = false;
   std::size_t new_faces = 0;
   std::string note;
+  std::string fallback;  ///< HoleReport::fallback: "" or what stood in for the method's path
   Point centroid{0, 0, 0};
   std::optional<GuidanceArrow> arrow;        ///< the method's guidance arrow, if any
   std::optional<HoleLabels> classification;  ///< the method's classification, if any

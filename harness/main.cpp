@@ -4,6 +4,7 @@
 #include "harness/case_gallery.h"
 #include "harness/case_selection.h"
 #include "harness/compare.h"
+#include "harness/output_folder_lock.h"
 #include "harness/paper_figures.h"
 #include "harness/report/report.h"
 #include "harness/results_reader.h"
@@ -13,6 +14,7 @@
 #include "harness/shard_status.h"
 #include "harness/slurm_submit.h"
 #include "harness/suite.h"
+#include "harness/validate_results.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
@@ -74,6 +76,22 @@ void print_summary_table(const holebench::harness::RunSummary& summary) {
   fmt::print("\n{} jobs, {} not ok, {:.1f} s. Results: {} and {}\n", summary.records.size(),
              summary.failures, summary.seconds, summary.results_json.string(),
              summary.results_csv.string());
+}
+
+// holebench validate: each violation on its own line, then "N records, M violations"; exit
+// code 0 if none, 1 on a violation, 2 when a file cannot be read as a results file.
+int validate_command(const std::vector<std::filesystem::path>& files) {
+  holebench::harness::ValidationReport report;
+  try {
+    report = holebench::harness::validate_results_files(files);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "holebench validate: {}\n", e.what());
+    return 2;
+  }
+  for (const auto& violation : report.violations)
+    fmt::print("{}\n", holebench::harness::format_violation(violation));
+  fmt::print("{}\n", holebench::harness::format_validation_summary(report));
+  return report.ok() ? 0 : 1;
 }
 
 void add_catalog_options(CLI::App* command, CatalogOptions& catalog, bool& no_cad) {
@@ -180,7 +198,10 @@ int main(int argc, char** argv) {
       "run",
       "Run a suite (or cases x methods x users x noise x seeds) into a folder; each job in "
       "its own process, in parallel");
-  run->add_option("--out", run_options.out_dir, "Output folder (created if missing)")->required();
+  run->add_option("--out", run_options.out_dir,
+                  "Output folder (created if missing). One holebench process at a time: while a "
+                  "run or merge holds it (DIR/.holebench.lock), another exits with code 2")
+      ->required();
   run->add_option("--suite", suite_name,
                   "Suite name (suites/<name>.json: smoke, default, nightly, paper) or path; the "
                   "options below, where given, override it");
@@ -243,7 +264,7 @@ int main(int argc, char** argv) {
   merge_inputs_option->excludes(merge_shards_option);
   merge->add_option("--out", merge_out,
                     "Output folder for the merged results.json and results.csv (with --shards, "
-                    "default: the sharded run's folder)");
+                    "default: the sharded run's folder); locked while merging, like run's --out");
   merge->add_flag("--allow-incomplete", merge_allow_incomplete,
                   "With --shards: merge the records there are even if shards are not complete");
 
@@ -334,6 +355,17 @@ int main(int argc, char** argv) {
                       "Suite whose tolerances judge regressions (default: the suite named in the "
                       "new results' context; without one, the built-in defaults)");
   compare->add_option("--junit", junit_path, "Also write a JUnit XML file for CI dashboards");
+
+  std::vector<std::filesystem::path> validate_files;
+  auto* validate = app.add_subcommand(
+      "validate",
+      "Check results files record by record: required fields, unique job ids, every metric a "
+      "finite number in its range (_fraction, _ok/is_ flags, _count), lower <= value <= upper, "
+      "mean <= RMS <= Hausdorff upper, no open hole in an ok job (docs/results.md). Prints each "
+      "violation with its job id and a summary; exit code 0 if none, 1 on a violation, 2 on an "
+      "unreadable file");
+  validate->add_option("results", validate_files, "results.json files (job ids unique across them)")
+      ->required();
 
   holebench::harness::FiguresOptions figures_options;
   std::filesystem::path figures_results;
@@ -451,6 +483,7 @@ int main(int argc, char** argv) {
                      "holebench merge: give results.json files and --out, or --shards DIR\n");
         return 2;
       }
+      const holebench::harness::OutputFolderLock lock(merge_out);
       std::vector<holebench::harness::ResultsData> sets;
       for (const auto& path : merge_inputs) {
         sets.push_back(holebench::harness::read_results_json(path));
@@ -545,6 +578,8 @@ int main(int argc, char** argv) {
         holebench::harness::write_junit_xml(comparison, junit_path);
       return comparison.has_regression() ? 1 : 0;
     }
+    if (validate->parsed())
+      return validate_command(validate_files);
     if (figures->parsed()) {
       if (!figures_results.empty())
         figures_options.results = figures_results;
@@ -577,6 +612,11 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
+  } catch (const holebench::harness::OutputFolderInUse& e) {
+    // holebench run / merge: another process writes the folder.
+    std::fprintf(stderr, "holebench %s: %s\n", app.get_subcommands().front()->get_name().c_str(),
+                 e.what());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "holebench: %s\n", e.what());
     return 2;

@@ -149,7 +149,8 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
                                 {"centroid", point_to_json(hole.centroid)},
                                 {"closed", hole.closed},
                                 {"new_faces", hole.new_faces},
-                                {"note", hole.note}};
+                                {"note", hole.note},
+                                {"fallback", hole.fallback}};
     if (hole.arrow) {
       h["arrow"] = {{"position", point_to_json(hole.arrow->position)},
                     {"direction", point_to_json(hole.arrow->direction)}};
@@ -216,6 +217,7 @@ JobRecord record_from_json(const nlohmann::json& j) {
       hole.closed = value_or(h, "closed", false);
       hole.new_faces = value_or<std::size_t>(h, "new_faces", 0);
       hole.note = value_or<std::string>(h, "note", "");
+      hole.fallback = value_or<std::string>(h, "fallback", "");
       if (h.contains("arrow") && h["arrow"].is_object()) {
         hole.arrow = GuidanceArrow{point_from(h["arrow"].value("position", nlohmann::json())),
                                    point_from(h["arrow"].value("direction", nlohmann::json()))};

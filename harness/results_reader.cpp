@@ -10,7 +10,7 @@
 
 namespace holebench::harness {
 
-ResultsData read_results_json(const std::filesystem::path& path) {
+nlohmann::json read_results_document(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in)
     throw InvalidInputError(path.string() + ": cannot open the results file");
@@ -23,6 +23,11 @@ ResultsData read_results_json(const std::filesystem::path& path) {
   if (!j.is_object() || !j.contains("results") || !j["results"].is_array()) {
     throw InvalidInputError(path.string() + ": no \"results\" array: not a holebench results file");
   }
+  return j;
+}
+
+ResultsData read_results_json(const std::filesystem::path& path) {
+  const nlohmann::json j = read_results_document(path);
   ResultsData data;
   if (j.contains("context"))
     data.context = context_from_json(j["context"]);

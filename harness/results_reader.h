@@ -5,6 +5,8 @@
 #include "harness/job.h"
 #include "harness/results_file.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,6 +21,11 @@ struct ResultsData {
 /// Reads a results.json. Unknown fields are ignored; a missing field takes its default.
 /// Throws InvalidInputError naming the file for unreadable or malformed content.
 ResultsData read_results_json(const std::filesystem::path& path);
+
+/// The JSON document of a results.json, as read_results_json reads it: an object with a
+/// "results" array (records not yet checked). Throws InvalidInputError naming the file when it
+/// cannot be opened, is not JSON or has no "results" array.
+nlohmann::json read_results_document(const std::filesystem::path& path);
 
 /// One record from its JSON object (as written by write_results_json).
 JobRecord record_from_json_text(const std::string& json_text);

@@ -3,6 +3,7 @@
 #include "generators/case_catalog.h"
 #include "harness/case_selection.h"
 #include "harness/oracle_user.h"
+#include "harness/output_folder_lock.h"
 #include "harness/results_file.h"
 #include "methods/registry.h"
 
@@ -67,6 +68,7 @@ generators::CatalogOptions run_catalog_options(const RunOptions& options) {
 
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  const OutputFolderLock lock(options.out_dir);  // one run per folder, until this returns
   const generators::CaseCatalog catalog(run_catalog_options(options));
   print_skipped_models(catalog);
   const std::vector<Job> jobs = jobs_of_shard(plan_jobs(options, catalog), options.shard);

@@ -53,6 +53,8 @@ generators::CatalogOptions run_catalog_options(const RunOptions& options);
 
 /// Runs the jobs of `options.shard` (isolated, in parallel: harness/runner.h) and writes
 /// records.jsonl (as jobs finish), results.json, results.csv and snapshots/ into `options.out_dir`.
+/// Holds the folder's lock meanwhile (harness/output_folder_lock.h): throws OutputFolderInUse,
+/// before running anything, when another process holds it.
 RunSummary run_jobs(const RunOptions& options);
 
 }  // namespace holebench::harness

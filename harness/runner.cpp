@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -67,10 +68,16 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one)
   if (::pipe(fds) != 0)
     throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   std::fflush(nullptr);
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0)
     throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
+    // A worker ends with its run: a run killed outright (SIGKILL, no chance to stop its
+    // workers) leaves no worker behind writing into the output folder the next run takes.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent)
+      std::_Exit(1);
     ::close(fds[0]);
     // The child: run the job, send its record, leave without running the parent's atexit
     // handlers or destructors.

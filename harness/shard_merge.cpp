@@ -1,5 +1,6 @@
 #include "harness/shard_merge.h"
 
+#include "harness/output_folder_lock.h"
 #include "harness/results_file.h"
 #include "harness/runner.h"
 
@@ -29,6 +30,7 @@ ShardMergeResult merge_shards(const ShardMergeOptions& options) {
   if (!result.status.all_complete() && !options.allow_incomplete)
     return result;
   const auto out_dir = options.out_dir.empty() ? options.dir : options.out_dir;
+  const OutputFolderLock lock(out_dir);  // one writer per folder
 
   std::map<std::string, JobRecord> by_id;
   std::vector<RunContext> contexts;

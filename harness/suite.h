@@ -36,7 +36,8 @@ struct Tolerances {
 /// Metrics that are better higher, by name: fractions of correct answers
 /// (`*_correct_fraction`), pass/fail checks (`*_ok`, `is_*`), and the coverage and visibility
 /// fractions (`missing_edge_*_fraction`, `arrow_*visible_fraction`). Every other metric
-/// (distances, errors, angles, counts of defects, times) is better lower.
+/// (distances, errors, angles, counts of defects, times, the share of holes a fallback
+/// handled: `fallback_holes_fraction`) is better lower.
 bool higher_is_better_metric(const std::string& metric);
 
 /// Metrics that describe the case or the size of the answer, not its quality

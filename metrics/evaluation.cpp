@@ -237,6 +237,17 @@ void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptio
   out.add("arrow_direction_error_deg", error / arrows);
 }
 
+// The share of the reported holes that a stand-in handled instead of the method's own path
+// (HoleReport::fallback); absent when the method reported no hole.
+void add_fallbacks(const MethodResult& result, Recorder& out) {
+  if (result.holes.empty())
+    return;
+  const auto fallbacks = std::count_if(result.holes.begin(), result.holes.end(),
+                                       [](const HoleReport& h) { return !h.fallback.empty(); });
+  out.add("fallback_holes_fraction",
+          fraction(static_cast<std::size_t>(fallbacks), result.holes.size()));
+}
+
 }  // namespace
 
 Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options) {
@@ -254,6 +265,7 @@ Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationO
   add_validity(c, result, options, diagonal, out);
   add_classification(c, result, out);
   add_arrows(c, result, options, diagonal, complete_scene, out);
+  add_fallbacks(result, out);
   return evaluation;
 }
 

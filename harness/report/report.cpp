@@ -193,15 +193,17 @@ std::string make_plots(const ResultsData& data, const std::filesystem::path& plo
 std::string html_table(const SummaryTable& table) {
   std::string out =
       "<table class=\"summary\">\n<thead><tr><th>method</th><th>case kind</th>"
-      "<th>jobs</th><th>ok</th>";
+      "<th>jobs</th><th>ok</th><th>fallback</th>";
   for (const auto& metric : table.metrics) {
     out += fmt::format("<th>{}<br>median</th><th>IQR</th>", html_escape(metric));
   }
   out += "<th>note</th></tr></thead>\n<tbody>\n";
   for (const auto& row : table.rows) {
-    out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td>",
+    const auto share = row.fallback_share();
+    out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>",
                        row.flagged() ? " class=\"flagged\"" : "", html_escape(row.method),
-                       html_escape(row.case_kind), row.jobs, row.ok);
+                       html_escape(row.case_kind), row.jobs, row.ok,
+                       share ? fmt::format("{:.3g}", *share) : std::string("-"));
     for (const auto& stats : row.stats) {
       out += stats ? fmt::format("<td>{:.3g}</td><td>{:.3g}</td>", stats->median, stats->iqr())
                    : std::string("<td>-</td><td>-</td>");

@@ -108,6 +108,12 @@ std::string SummaryRow::note() const {
   return note;
 }
 
+std::optional<double> SummaryRow::fallback_share() const {
+  if (holes == 0)
+    return std::nullopt;
+  return static_cast<double>(fallback_holes) / static_cast<double>(holes);
+}
+
 SummaryTable summarize(const ResultsData& data, const SummaryOptions& options) {
   SummaryTable table;
   table.options = options;
@@ -130,6 +136,11 @@ SummaryTable summarize(const ResultsData& data, const SummaryOptions& options) {
     row.ok = static_cast<std::size_t>(
         std::count_if(records.begin(), records.end(),
                       [](const JobRecord* r) { return r->status == JobStatus::Ok; }));
+    for (const JobRecord* record : records) {
+      row.holes += record->holes.size();
+      for (const auto& hole : record->holes)
+        row.fallback_holes += hole.fallback.empty() ? 0 : 1;
+    }
     for (const auto& metric : table.metrics) {
       std::vector<double> values;
       for (const JobRecord* record : records) {
@@ -161,16 +172,18 @@ std::string summary_markdown(const ResultsData& data, const SummaryTable& table)
                      c.build_type.empty() ? "?" : c.build_type,
                      c.created_utc.empty() ? "?" : c.created_utc, data.records.size(), ok);
 
-  out += "| method | case kind | jobs | ok |";
-  std::string rule = "| --- | --- | ---: | ---: |";
+  out += "| method | case kind | jobs | ok | fallback |";
+  std::string rule = "| --- | --- | ---: | ---: | ---: |";
   for (const auto& metric : table.metrics) {
     out += fmt::format(" {} | IQR |", metric);
     rule += " ---: | ---: |";
   }
   out += " note |\n" + rule + " --- |\n";
   for (const auto& row : table.rows) {
-    out += fmt::format("| {} | {} | {} | {} |", markdown_cell(row.method),
-                       markdown_cell(row.case_kind), row.jobs, row.ok);
+    const auto share = row.fallback_share();
+    out += fmt::format("| {} | {} | {} | {} | {} |", markdown_cell(row.method),
+                       markdown_cell(row.case_kind), row.jobs, row.ok,
+                       share ? short_number(*share) : std::string("-"));
     for (const auto& stats : row.stats) {
       out +=
           stats ? fmt::format(" {} | {} |", short_number(stats->median), short_number(stats->iqr()))
@@ -181,9 +194,12 @@ std::string summary_markdown(const ResultsData& data, const SummaryTable& table)
   const auto flagged = std::count_if(table.rows.begin(), table.rows.end(),
                                      [](const SummaryRow& r) { return r.flagged(); });
   out += fmt::format(
-      "\nMedians over every job of the row that has the metric (all noise levels, seeds and "
-      "users); IQR = q3 - q1 (linear interpolation); `-`: no job of the row has it. Lengths "
-      "are relative to the bounding-box diagonal (`_rel_diag`), times in seconds.\n\n"
+      "\n`fallback`: the share of the row's hole reports (jobs of every status) that a "
+      "stand-in handled instead of the method's own path (the hole records' `fallback`; `-`: "
+      "no hole reported). Medians over every job of the row that has the metric (all noise "
+      "levels, seeds and users); IQR = q3 - q1 (linear interpolation); `-`: no job of the row "
+      "has it. Lengths are relative to the bounding-box diagonal (`_rel_diag`), times in "
+      "seconds.\n\n"
       "{} of {} rows flagged. `few`: fewer than {} values in that column; add seeds or noise "
       "levels before trusting the median. `spread`: IQR above {:g} % of the median; the row "
       "mixes cases or noise levels that behave differently; read the per-job values "
@@ -194,11 +210,12 @@ std::string summary_markdown(const ResultsData& data, const SummaryTable& table)
 }
 
 std::string summary_csv(const SummaryTable& table) {
-  std::string out = "method,case_kind,jobs,ok,metric,n,median,q1,q3,iqr,min,max,note\n";
+  std::string out =
+      "method,case_kind,jobs,ok,holes,fallback_holes,metric,n,median,q1,q3,iqr,min,max,note\n";
   for (const auto& row : table.rows) {
     for (std::size_t i = 0; i < table.metrics.size(); ++i) {
-      out += fmt::format("{},{},{},{},{},", csv_field(row.method), csv_field(row.case_kind),
-                         row.jobs, row.ok, table.metrics[i]);
+      out += fmt::format("{},{},{},{},{},{},{},", csv_field(row.method), csv_field(row.case_kind),
+                         row.jobs, row.ok, row.holes, row.fallback_holes, table.metrics[i]);
       if (const auto& s = row.stats[i]) {
         out += fmt::format("{},{},{},{},{},{},{},", s->n, s->median, s->q1, s->q3, s->iqr(), s->min,
                            s->max);
@@ -260,11 +277,14 @@ std::string summary_latex(const SummaryTable& table) {
                                                          : latex_escape(rows[i].method);
   };
 
-  begin_table("Jobs per method and case kind", "jobs", "llrr", "Method & Case kind & Jobs & OK");
+  begin_table("Jobs per method and case kind; fallback share: holes a stand-in handled", "jobs",
+              "llrrr", "Method & Case kind & Jobs & OK & Fallback share");
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     const auto& row = table.rows[i];
-    out += fmt::format("    {} & {} & {} & {} \\\\\n", method_cell(i), latex_escape(row.case_kind),
-                       row.jobs, row.ok);
+    const auto share = row.fallback_share();
+    out += fmt::format("    {} & {} & {} & {} & {} \\\\\n", method_cell(i),
+                       latex_escape(row.case_kind), row.jobs, row.ok,
+                       share ? latex_number(*share) : std::string("--"));
   }
   end_table();
 

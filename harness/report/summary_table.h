@@ -43,11 +43,16 @@ struct SummaryRow {
   std::string method;
   std::string case_kind;  ///< "<case_family>/<case_kind>", e.g. "box/corner", "brep/k3/inner"
   std::size_t jobs = 0;
-  std::size_t ok = 0;                       ///< jobs with status ok
+  std::size_t ok = 0;              ///< jobs with status ok
+  std::size_t holes = 0;           ///< hole reports of the row's jobs (whatever their status)
+  std::size_t fallback_holes = 0;  ///< of those, holes a stand-in handled (HoleRecord::fallback)
   std::vector<std::optional<Stats>> stats;  ///< one per SummaryTable::metrics; nullopt: no value
   std::vector<std::string> few;             ///< columns with 0 < n < min_samples
   std::vector<std::string> spread;          ///< columns with IQR > max_relative_spread * |median|
   bool flagged() const { return !few.empty() || !spread.empty(); }
+  /// fallback_holes / holes: the share of the row's holes that the method's own path did not
+  /// handle (docs/results.md); nullopt when the row reports no hole.
+  std::optional<double> fallback_share() const;
   /// "" or e.g. "few: n=2; spread: hausdorff_rel_diag" (few in every column with values: the
   /// smallest count; otherwise the short columns by name).
   std::string note() const;
@@ -63,17 +68,17 @@ struct SummaryTable {
 /// the group that has it (whatever its status, noise, seed or user).
 SummaryTable summarize(const ResultsData& data, const SummaryOptions& options = {});
 
-/// Markdown: a heading with the results' context, the table (median and IQR per metric, 3
-/// significant digits), and a legend for the flags.
+/// Markdown: a heading with the results' context, the table (jobs, ok, fallback share, then
+/// median and IQR per metric, 3 significant digits), and a legend for the flags.
 std::string summary_markdown(const ResultsData& data, const SummaryTable& table);
 
 /// CSV, one row per method x case kind x metric:
-/// method,case_kind,jobs,ok,metric,n,median,q1,q3,iqr,min,max,note (numbers in full
-/// precision; empty when the group has no value).
+/// method,case_kind,jobs,ok,holes,fallback_holes,metric,n,median,q1,q3,iqr,min,max,note
+/// (numbers in full precision; empty when the group has no value).
 std::string summary_csv(const SummaryTable& table);
 
-/// LaTeX (booktabs): a table of jobs and ok counts and one table per metric (n, median, IQR,
-/// min, max); text escaped.
+/// LaTeX (booktabs): a table of jobs, ok counts and fallback shares and one table per metric
+/// (n, median, IQR, min, max); text escaped.
 std::string summary_latex(const SummaryTable& table);
 
 /// Escapes LaTeX's special characters (\ & % $ # _ { } ~ ^).

@@ -76,9 +76,12 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
       report.new_faces = closing.new_faces;
       report.new_vertices = closing.new_vertices;
       if (!closing.closed) {
+        // The paper closes this hole (case a); an arrow stands in for the closing. A hole the
+        // user declined (case b) is guided on the paper's own path: no fallback.
         ++failed;
         guide = true;
         report.note = "exact closing failed: " + closing.error + "; guided instead";
+        report.fallback = "guided_instead_of_closed";
       }
     }
     if (guide) {

@@ -66,6 +66,9 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     report.closed = filling.closed;
     report.new_faces = filling.new_faces;
     report.new_vertices = filling.new_vertices;
+    // A stitched patch whose sub-holes needed a stand-in for equation 6's projection.
+    if (filling.closed)
+      report.fallback = sub_hole_fallback(filling.sub_holes);
     std::string fallback;
     if (!filling.closed && options.filling.triangulate_hole_fallback) {
       // Not in the paper: the hole is closed without its feature lines.
@@ -73,11 +76,12 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
       report.new_faces = fill_hole_without_features(result.repaired, hole.loop.halfedges.front());
       filling_seconds += seconds_since(start);
       report.closed = report.new_faces > 0;
+      report.fallback = "cgal_triangulate_hole";
       fallback = "; " + filling.error + ": filled by CGAL triangulate_hole without feature lines";
     }
     std::size_t fallbacks = 0;
     for (const auto& s : filling.sub_holes)
-      fallbacks += s.ok && s.plane != "equation 6" ? 1 : 0;
+      fallbacks += s.ok && !s.fallback.empty() ? 1 : 0;
     report.note = fmt::format(
         "feature points detected {} used {}; pairs {}; corner {}; user interventions {}; "
         "feature lines {}; sub-holes {}; projection fallbacks {}",

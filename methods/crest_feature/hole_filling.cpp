@@ -24,6 +24,11 @@ namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+// SubHoleFilling::fallback names, from the nearest to the paper's step to the furthest.
+constexpr const char* kNewellProjection = "sub_hole_newell_projection";
+constexpr const char* kLeastSquaresProjection = "sub_hole_least_squares_projection";
+constexpr const char* kPolylineTriangulation = "sub_hole_cgal_triangulate_hole_polyline";
+
 Point node_point(const Mesh& mesh, const HolePartition& partition, Node node) {
   return node >= 0 ? mesh.point(mesh.vertex_handle(node))
                    : partition.new_points[new_point_index(node)];
@@ -58,6 +63,16 @@ Point projection_normal(const Mesh& mesh, const std::vector<Node>& sub_hole) {
   return n;
 }
 
+std::string sub_hole_fallback(const std::vector<SubHoleFilling>& sub_holes) {
+  for (const char* name : {kPolylineTriangulation, kLeastSquaresProjection, kNewellProjection}) {
+    for (const auto& s : sub_holes) {
+      if (s.ok && s.fallback == name)
+        return name;
+    }
+  }
+  return "";
+}
+
 HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
                             const HoleFillingOptions& options) {
   HoleFillingResult result;
@@ -73,13 +88,18 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
     centroid /= static_cast<double>(points.size());
     // Equation 6 first; where its projection intersects itself, Newell's normal (the
     // maximum area vector of the polygon itself), then the least-squares plane.
-    std::vector<std::pair<std::string, Point>> normals{
-        {"equation 6", projection_normal(mesh, sub_hole)}, {"newell", newell_normal(points)}};
+    struct Candidate {
+      std::string name;
+      std::string fallback;
+      Point normal;
+    };
+    std::vector<Candidate> normals{{"equation 6", "", projection_normal(mesh, sub_hole)},
+                                   {"newell", kNewellProjection, newell_normal(points)}};
     const PlaneFit fit = fit_plane(points);
     if (fit.valid)
-      normals.push_back({"least squares", fit.plane.normal});
+      normals.push_back({"least squares", kLeastSquaresProjection, fit.plane.normal});
     PolygonTriangulation triangulation;
-    for (const auto& [name, normal] : normals) {
+    for (const auto& [name, fallback, normal] : normals) {
       if (normal.norm() < 1e-12)
         continue;
       Plane plane;
@@ -88,6 +108,7 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
       triangulation = triangulate_planar_polygon(points, plane);
       if (triangulation.ok) {
         filling.plane = name;
+        filling.fallback = fallback;
         break;
       }
       if (filling.error.empty())
@@ -111,6 +132,7 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
           triangulation.triangles.push_back({t.first, t.second, t.third});
         triangulation.ok = true;
         filling.plane = "none (3D minimum-weight triangulation)";
+        filling.fallback = kPolylineTriangulation;
       }
     }
     filling.ok = triangulation.ok;

@@ -35,8 +35,17 @@ struct SubHoleFilling {
   /// where equation 6's projection intersects itself ("newell", "least squares", or none:
   /// the 3D fallback).
   std::string plane;
+  /// "" when equation 6's projection was triangulated (the paper's step); otherwise what
+  /// stood in: "sub_hole_newell_projection", "sub_hole_least_squares_projection" or
+  /// "sub_hole_cgal_triangulate_hole_polyline" (HoleReport::fallback names).
+  std::string fallback;
   std::string error;
 };
+
+/// The fallback of a hole whose sub-holes were filled as `sub_holes` say: the one furthest
+/// from the paper (the 3D triangulation, then the least-squares plane, then Newell's), or ""
+/// when every sub-hole was projected by equation 6.
+std::string sub_hole_fallback(const std::vector<SubHoleFilling>& sub_holes);
 
 struct HoleFillingResult {
   std::vector<SubHoleFilling> sub_holes;

@@ -51,8 +51,11 @@ MethodResult fill_holes_liepa_cgal(const Mesh& holed, const LiepaCgalOptions& op
     report.closed = !faces.empty();
     if (!report.closed)
       report.note = "CGAL found no triangulation of the hole";
-    else if (!fair_ok)
+    else if (!fair_ok) {
+      // CGAL keeps the refined patch unfaired when its fairing solver fails.
       report.note = "triangulated and refined; fairing failed";
+      report.fallback = "refined_without_fairing";
+    }
     closed += report.closed ? 1 : 0;
     result.holes.push_back(std::move(report));
   }

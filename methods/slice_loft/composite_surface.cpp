@@ -201,13 +201,17 @@ Frame portion_frame(const Mesh& mesh, const std::vector<FaceHandle>& faces,
 
 }  // namespace
 
+bool decomposed_by_features(const Hole& hole, const MissingFeatures& features) {
+  const std::size_t m = hole.segments.size();
+  return m >= 2 && features.edges.size() == m;
+}
+
 std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>& contours,
                                    const Hole& hole, const MissingFeatures& features,
                                    const std::vector<int>& face_region) {
   std::vector<Portion> portions;
   const std::size_t m = hole.segments.size();
-  const bool with_features = m >= 2 && features.edges.size() == m;
-  if (!with_features) {
+  if (!decomposed_by_features(hole, features)) {
     Portion portion;
     portion.region = m == 1 ? hole.segments[0].region : kNoRegion;
     for (auto v : contours[hole.contour].vertices)

@@ -28,6 +28,11 @@ struct Portion {
   std::vector<std::vector<Point>> missing_edges;  ///< the feature paths it is bounded by
 };
 
+/// Whether `hole_portions` splits the hole into one portion per segment (a multi-segment hole
+/// whose missing features were rebuilt, one edge per segment end); otherwise the whole hole
+/// is one portion.
+bool decomposed_by_features(const Hole& hole, const MissingFeatures& features);
+
 /// The portions of a hole: one per segment when features were found, else the whole hole.
 std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>& contours,
                                    const Hole& hole, const MissingFeatures& features,

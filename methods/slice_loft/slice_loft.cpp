@@ -23,6 +23,11 @@ namespace {
 
 using namespace slice_loft;
 using Clock = std::chrono::steady_clock;
+
+// HoleReport::fallback when the paper's decomposition (one portion per segment, bounded by the
+// missing features, each lofted in its region) does not produce the patch and the whole hole
+// is filled as one portion without features, slicing every influencing triangle.
+constexpr const char* kOnePortionWithoutFeatures = "one_portion_without_features";
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -114,11 +119,17 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
       note << "; missing features not rebuilt: " << features.note;
     }
 
+    // A multi-segment hole without its missing features is filled as one portion slicing
+    // every influencing triangle: the same stand-in as the fallback below.
+    if (hole.segments.size() >= 2 && !decomposed_by_features(hole, features))
+      report.fallback = kOnePortionWithoutFeatures;
+
     SewingResult sewn;
     std::string error = fill(result.repaired, holed, found, hole, features, face_region, options,
                              clock, sewn, true);
     if (!error.empty()) {
       // Fall back: the whole hole as one portion, slicing every influencing triangle.
+      report.fallback = kOnePortionWithoutFeatures;
       note << "; " << error << "; filled as one portion without features";
       const MissingFeatures none;
       error =

@@ -116,6 +116,18 @@ TEST(Compare, DirectionDecidesWhichWayIsARegression) {
   EXPECT_EQ(one_metric(0.02, 0.01, tolerances, fraction).verdict, MetricVerdict::Regressed);
 }
 
+// The share of holes handled by a stand-in is better lower: more fallbacks is a regression,
+// by its name alone (it ends in _fraction, but is no correct-answer or coverage fraction).
+TEST(Compare, MoreFallbackHolesIsARegression) {
+  const std::string name = "fallback_holes_fraction";
+  const Tolerances built_in;
+  ASSERT_TRUE(built_in.find(name).has_value());
+  EXPECT_TRUE(built_in.find(name)->lower_is_better);
+  const auto tolerances = smoke_tolerances();
+  EXPECT_EQ(one_metric(0.0, 0.5, tolerances, name).verdict, MetricVerdict::Regressed);
+  EXPECT_EQ(one_metric(0.5, 0.0, tolerances, name).verdict, MetricVerdict::Improved);
+}
+
 TEST(Compare, ToleranceIsTheLargerOfAbsoluteAndRelativeTimesOld) {
   auto tolerances = smoke_tolerances();  // relative 5 %, absolute 1e-6
   // 1.0 -> 1.04: +4 % <= 5 %; 1.0 -> 1.06: +6 % > 5 %.

@@ -1,10 +1,13 @@
 // `holebench report` on the hand-written fixture tests/harness/fixtures/report_results.json:
 //
-// | method        | case kind         | jobs | ok | hausdorff_rel_diag values   | time_method_s |
-// | brep_guidance | box/face_interior | 3    | 2  | 0, 0.001, 0.1               | .5, .6, .7    |
-// | brep_guidance | brep/k3/inner     | 1    | 0  | -                           | -             |
-// | liepa_cgal    | box/face_interior | 4    | 4  | .125, .25, .375, .875       | 1, 1.5, 2, 2  |
-// | liepa_cgal    | brep/k3/inner     | 2    | 1  | 0.2                         | 3             |
+// | method        | case kind         | jobs | ok | holes (fallback) | hausdorff_rel_diag values |
+// time_method_s | | brep_guidance | box/face_interior | 3    | 2  | 3 (1)            | 0, 0.001,
+// 0.1             | .5, .6, .7    | | brep_guidance | brep/k3/inner     | 1    | 0  | 0 | - | - |
+// | liepa_cgal    | box/face_interior | 4    | 4  | 4 (0)            | .125, .25, .375, .875     |
+// 1, 1.5, 2, 2  | | liepa_cgal    | brep/k3/inner     | 2    | 1  | 0                | 0.2 | 3 |
+//
+// Fallback share: 1 of the 3 holes of brep_guidance x box/face_interior (the partial job's,
+// guided instead of closed) = 0.333; 0 of 4 for liepa_cgal; none without holes.
 //
 // Quantiles interpolate linearly at p * (n - 1) in the sorted values. For liepa_cgal x
 // box/face_interior, Hausdorff: median = (0.25 + 0.375) / 2 = 0.3125; q1 at 0.75 =
@@ -81,6 +84,8 @@ TEST(Report, SummaryRowsHaveTheHandComputedMediansAndFlags) {
   EXPECT_EQ(liepa.case_kind, "box/face_interior");
   EXPECT_EQ(liepa.jobs, 4u);
   EXPECT_EQ(liepa.ok, 4u);
+  EXPECT_EQ(liepa.holes, 4u);
+  EXPECT_EQ(liepa.fallback_share(), 0.0);
   EXPECT_EQ(liepa.stats[0]->median, 0.3125);
   EXPECT_EQ(liepa.stats[4]->median, 1.75);
   EXPECT_EQ(liepa.stats[4]->iqr(), 0.625);
@@ -91,6 +96,10 @@ TEST(Report, SummaryRowsHaveTheHandComputedMediansAndFlags) {
   const auto& guidance = table.rows[0];
   EXPECT_EQ(guidance.jobs, 3u);
   EXPECT_EQ(guidance.ok, 2u);  // the partial job is not ok
+  EXPECT_EQ(guidance.holes, 3u);
+  EXPECT_EQ(guidance.fallback_holes, 1u);
+  EXPECT_EQ(guidance.fallback_share(), 1.0 / 3.0);
+  EXPECT_FALSE(table.rows[1].fallback_share());  // no hole reported
   EXPECT_EQ(guidance.stats[0]->median, 0.001);
   EXPECT_EQ(guidance.stats[3]->median, 1.0);
   EXPECT_FALSE(table.rows[1].flagged());        // no values at all: nothing to flag
@@ -113,22 +122,31 @@ TEST(Report, WritesEveryFileWithTheRightNumbers) {
 
   const auto md = read_text(report / "summary.md");
   EXPECT_EQ(md, console_summary(data, no_plots()));
-  EXPECT_NE(md.find("| liepa_cgal | box/face_interior | 4 | 4 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| liepa_cgal | box/face_interior | 4 | 4 | 0 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| - | - | 1.75 | 0.625 | few: new_vertex"), std::string::npos) << md;
-  EXPECT_NE(md.find("| brep_guidance | box/face_interior | 3 | 2 | 0.001 |"), std::string::npos);
-  EXPECT_NE(md.find("| brep_guidance | brep/k3/inner | 1 | 0 | - | - |"), std::string::npos);
+  EXPECT_NE(md.find("| brep_guidance | box/face_interior | 3 | 2 | 0.333 | 0.001 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| brep_guidance | brep/k3/inner | 1 | 0 | - | - | - |"), std::string::npos);
 
   const auto csv = read_text(report / "summary.csv");
-  EXPECT_EQ(csv.rfind("method,case_kind,jobs,ok,metric,n,median,q1,q3,iqr,min,max,note\n", 0), 0u);
-  EXPECT_NE(csv.find("liepa_cgal,box/face_interior,4,4,hausdorff_rel_diag,4,0.3125,0.21875,0.5,"
-                     "0.28125,0.125,0.875,\"few: "),
+  EXPECT_EQ(csv.rfind("method,case_kind,jobs,ok,holes,fallback_holes,metric,n,median,q1,q3,iqr,"
+                      "min,max,note\n",
+                      0),
+            0u);
+  EXPECT_NE(csv.find("liepa_cgal,box/face_interior,4,4,4,0,hausdorff_rel_diag,4,0.3125,0.21875,"
+                     "0.5,0.28125,0.125,0.875,\"few: "),
             std::string::npos)
       << csv;
-  EXPECT_NE(csv.find("brep_guidance,brep/k3/inner,1,0,time_method_s,0,,,,,,,\n"),
+  EXPECT_NE(csv.find("brep_guidance,box/face_interior,3,2,3,1,time_method_s,"), std::string::npos);
+  EXPECT_NE(csv.find("brep_guidance,brep/k3/inner,1,0,0,0,time_method_s,0,,,,,,,\n"),
             std::string::npos);
 
   const auto tex = read_text(report / "tables.tex");
-  EXPECT_NE(tex.find("liepa\\_cgal & box/face\\_interior & 4 & 4 \\\\"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("liepa\\_cgal & box/face\\_interior & 4 & 4 & 0 \\\\"), std::string::npos)
+      << tex;
+  EXPECT_NE(tex.find("& box/face\\_interior & 3 & 2 & 0.333 \\\\"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("& brep/k3/inner & 1 & 0 & -- \\\\"), std::string::npos) << tex;
   EXPECT_NE(tex.find("\\texttt{hausdorff\\_rel\\_diag}"), std::string::npos);
   EXPECT_NE(tex.find("0.312"), std::string::npos);
   for (const char* rule : {"\\toprule", "\\midrule", "\\bottomrule"}) {

@@ -3,12 +3,14 @@
 // merged records come in plan order under an unsharded context.
 #include "harness/shard_merge.h"
 
+#include "harness/output_folder_lock.h"
 #include "harness/results_file.h"
 #include "harness/shard.h"
 #include "harness/shard_manifest.h"
 #include "harness/shard_status.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -142,6 +144,28 @@ TEST(ShardMerge, RecordsInPlanOrderUnderAnUnshardedContext) {
   EXPECT_EQ(merged.context.suite, "fake");
   EXPECT_EQ(merged.context.host, "node-0,node-1,node-2");
   EXPECT_TRUE(std::filesystem::exists(dir / "merged" / "results.csv"));
+}
+
+// The merge writes its output folder alone: while another holds the folder's lock, it
+// refuses, naming the holder, and writes nothing.
+TEST(ShardMerge, RefusesAnOutputFolderInUse) {
+  const auto dir = fresh_dir("in_use");
+  write_shard_manifest(dir, manifest_of(plan()));
+  for (std::size_t i = 0; i < kShards; ++i)
+    write_shard(dir, i, 100);
+  ShardMergeOptions options;
+  options.dir = dir;
+  {
+    const OutputFolderLock holder(dir);
+    try {
+      merge_shards(options);
+      ADD_FAILURE() << "merged into a folder in use";
+    } catch (const OutputFolderInUse& e) {
+      EXPECT_EQ(e.holder_pid(), ::getpid());
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "results.json"));
+  }
+  EXPECT_TRUE(merge_shards(options).written);  // released with its holder
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ TEST(Suite, UnlistedMetricsAreJudgedInTheDirectionTheirNameSays) {
   for (const char* lower :
        {"hausdorff_rel_diag", "hole_mean_distance_rel_diag", "missing_corner_error_max_rel_diag",
         "arrow_direction_error_deg", "self_intersections_count", "open_boundary_loops_count",
-        "new_degenerate_faces_count", "patch_normal_deviation_mean_deg"}) {
+        "new_degenerate_faces_count", "patch_normal_deviation_mean_deg",
+        "fallback_holes_fraction"}) {
     const auto tolerance = none.find(lower);
     ASSERT_TRUE(tolerance.has_value()) << lower;
     EXPECT_TRUE(tolerance->lower_is_better) << lower;

@@ -7,6 +7,7 @@
 #include "generators/cad/cad_models.h"
 #include "generators/case_catalog.h"
 #include "methods/common/planar_polygon_triangulation.h"
+#include "methods/crest_feature/hole_filling.h"
 #include "methods/crest_feature/hole_identification.h"
 #include "methods/crest_feature/hole_partitioning.h"
 #include "metrics/evaluation.h"
@@ -228,6 +229,49 @@ TEST(CrestFeature, OutputIsClosedAndManifold) {
       EXPECT_EQ(metric(r.evaluation, "original_faces_unchanged_ok"), 1.0) << id;
     }
   }
+}
+
+// HoleReport::fallback: empty where the paper's steps fill the hole (the one-crease hole:
+// every sub-hole projects by equation 6, as the test above checks); a sub-hole projected
+// some other way names that stand-in; a patch that cannot be stitched is replaced by CGAL's
+// triangulate_hole. The brep cases are those of the nightly baseline whose notes say so.
+TEST(CrestFeature, FallbackNamesWhatStoodInForThePaper) {
+  const MethodRun crease = run_method("crease/fandisk/1", false);
+  ASSERT_EQ(crease.result.holes.size(), 1u);
+  EXPECT_TRUE(crease.result.holes[0].closed);
+  EXPECT_EQ(crease.result.holes[0].fallback, "") << crease.result.holes[0].note;
+
+  const MethodRun dependent = run_method("brep/k3/linearly-dependent/small", false);
+  ASSERT_EQ(dependent.result.holes.size(), 1u);
+  const HoleReport& projected = dependent.result.holes[0];
+  EXPECT_TRUE(projected.closed);
+  EXPECT_NE(projected.note.find("projection fallbacks 1"), std::string::npos) << projected.note;
+  EXPECT_EQ(projected.fallback, "sub_hole_newell_projection") << projected.note;
+
+  const MethodRun outer = run_method("brep/k1/outer/outer/small", false);
+  ASSERT_EQ(outer.result.holes.size(), 1u);
+  EXPECT_NE(outer.result.holes[0].note.find("CGAL triangulate_hole"), std::string::npos)
+      << outer.result.holes[0].note;
+  EXPECT_EQ(outer.result.holes[0].fallback, "cgal_triangulate_hole");
+}
+
+// A hole's fallback is the sub-holes' stand-in furthest from the paper: the 3D triangulation,
+// then the least-squares plane, then Newell's; none when every sub-hole used equation 6. A
+// sub-hole that failed stands in for nothing.
+TEST(CrestFeature, SubHoleFallbackIsTheFurthestFromThePaper) {
+  SubHoleFilling eq6{true, "equation 6", "", ""};
+  SubHoleFilling newell{true, "newell", "sub_hole_newell_projection", ""};
+  SubHoleFilling least{true, "least squares", "sub_hole_least_squares_projection", ""};
+  SubHoleFilling polyline{true, "none (3D minimum-weight triangulation)",
+                          "sub_hole_cgal_triangulate_hole_polyline", ""};
+  SubHoleFilling failed{false, "", "sub_hole_cgal_triangulate_hole_polyline", "no triangulation"};
+  EXPECT_EQ(sub_hole_fallback({}), "");
+  EXPECT_EQ(sub_hole_fallback({eq6, eq6}), "");
+  EXPECT_EQ(sub_hole_fallback({eq6, newell}), "sub_hole_newell_projection");
+  EXPECT_EQ(sub_hole_fallback({newell, least, eq6}), "sub_hole_least_squares_projection");
+  EXPECT_EQ(sub_hole_fallback({least, polyline, newell}),
+            "sub_hole_cgal_triangulate_hole_polyline");
+  EXPECT_EQ(sub_hole_fallback({eq6, failed}), "");
 }
 
 // The two user modes are distinct: no user never intervenes; the oracle corrects what the

@@ -21,6 +21,7 @@ TEST_P(LiepaCgalOnBoxCases, ClosesEveryHoleAndKeepsTheRestOfTheMesh) {
   EXPECT_TRUE(find_boundary_loops(result.repaired).empty());
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_TRUE(result.holes[0].closed);
+  EXPECT_EQ(result.holes[0].fallback, "");  // triangulated, refined and faired: no stand-in
   EXPECT_EQ(result.holes[0].new_faces, count_new_faces(result.repaired));
   EXPECT_GT(result.holes[0].new_faces, 0u);
   // Original elements keep their index and position; only new ones are added.

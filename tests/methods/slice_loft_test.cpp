@@ -132,6 +132,40 @@ TEST(SliceLoft, IslandIsKeptAndFilledAround) {
   EXPECT_TRUE(find_boundary_loops(result.repaired).empty());
 }
 
+// HoleReport::fallback: empty where the paper's decomposition produced the patch (the box
+// corner: three portions bounded by the rebuilt edges); "one_portion_without_features" where
+// the whole hole was filled as one portion instead, both when step III rebuilds no features
+// (three linearly dependent faces: the traced edges do not meet at one corner) and when the
+// decomposition with features fails later and the hole is filled again as one portion. The
+// cases are those of the nightly baseline whose notes say so.
+TEST(SliceLoft, FallbackNamesTheOnePortionFill) {
+  const MethodResult corner = run_loft(generators::make_case("box/corner"));
+  ASSERT_EQ(corner.holes.size(), 1u);
+  EXPECT_TRUE(corner.holes[0].closed);
+  EXPECT_EQ(corner.holes[0].fallback, "") << notes(corner);
+
+  const MethodResult dependent =
+      run_loft(generators::make_case("brep/k3/linearly-dependent/small", 0, 5.0));
+  ASSERT_EQ(dependent.holes.size(), 1u);
+  EXPECT_NE(dependent.holes[0].note.find("missing features not rebuilt"), std::string::npos)
+      << notes(dependent);
+  EXPECT_EQ(dependent.holes[0].fallback, "one_portion_without_features") << notes(dependent);
+
+  const MethodResult refilled =
+      run_loft(generators::make_case("brep/k3/outer/reflex-reflex-reflex/inner-outer-outer/small"));
+  ASSERT_FALSE(refilled.holes.empty());
+  std::size_t refills = 0;
+  for (const auto& hole : refilled.holes) {
+    const bool refill =
+        hole.note.find("filled as one portion without features") != std::string::npos;
+    refills += refill ? 1 : 0;
+    if (refill) {
+      EXPECT_EQ(hole.fallback, "one_portion_without_features") << hole.note;
+    }
+  }
+  EXPECT_GT(refills, 0u) << notes(refilled);
+}
+
 // Away from the hole nothing changes: every input vertex keeps its position bit for bit,
 // and every input face is still there with the same vertices.
 TEST(SliceLoft, InputUnchangedAwayFromTheHole) {

@@ -124,6 +124,23 @@ TEST(Evaluation, ArrowsAndClassificationsAreJudged) {
   EXPECT_EQ(e.find("arrow_direction_error_deg")->value, 0.0);
 }
 
+// fallback_holes_fraction = reports with a fallback / reports: 1 of 4 is 0.25, none is 0, and
+// without hole reports the metric is absent (it does not apply).
+TEST(Evaluation, FallbackHolesFractionCountsTheReportsWithAStandIn) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult result;
+  result.repaired = c.input;
+  EXPECT_FALSE(has(evaluate(c, result), "fallback_holes_fraction"));
+
+  result.holes.resize(4);
+  const Evaluation none = evaluate(c, result);
+  ASSERT_TRUE(has(none, "fallback_holes_fraction"));
+  EXPECT_EQ(none.find("fallback_holes_fraction")->value, 0.0);
+
+  result.holes[2].fallback = "one_portion_without_features";
+  EXPECT_EQ(evaluate(c, result).find("fallback_holes_fraction")->value, 0.25);
+}
+
 TEST(Evaluation, SameInputsGiveTheSameNumbers) {
   const Case c = generators::make_case("brep/k2/inner/convex/small");
   MethodResult result;
