@@ -319,12 +319,14 @@ class MeanSearch {
     result_.area = total_area_;
     result_.mean = e.mean;
     result_.mean_error = e.mean_error;
-    result_.mean_lower = e.mean_lower();
-    result_.mean_upper = e.mean + e.mean_error;
+    // Widened by a relative 1e-12 for the rounding of the sums and closed forms.
+    const double rounding = 1e-12;
+    result_.mean_lower = e.mean_lower() * (1.0 - rounding);
+    result_.mean_upper = (e.mean + e.mean_error) * (1.0 + rounding);
     result_.rms = e.rms;
     result_.rms_error = e.rms_error;
-    result_.rms_lower = e.rms_lower();
-    result_.rms_upper = e.rms + e.rms_error;
+    result_.rms_lower = e.rms_lower() * (1.0 - rounding);
+    result_.rms_upper = (e.rms + e.rms_error) * (1.0 + rounding);
     result_.converged = result_.converged && within_bound(e);
     return result_;
   }
@@ -646,11 +648,10 @@ DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::Triangl
 
 namespace {
 
-// Each interval's ends ordered (rounding may cross them by an ulp) and its value inside.
+// Each interval's ends ordered (rounding may cross them by an ulp: the upper end, which
+// carries the clamps, is kept) and its value inside.
 void settle(DistanceInterval& d) {
-  d.lower = std::max(0.0, d.lower);
-  if (d.lower > d.upper)
-    d.lower = d.upper = 0.5 * (d.lower + d.upper);
+  d.lower = std::min(std::max(0.0, d.lower), d.upper);
   d.value = std::clamp(d.value, d.lower, d.upper);
 }
 

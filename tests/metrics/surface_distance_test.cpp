@@ -184,3 +184,82 @@ TEST(MeanDistance, SameInputsGiveTheSameNumbers) {
 
 }  // namespace
 }  // namespace holebench
+
+namespace holebench {
+namespace {
+
+// The clamps of distance_summary(): intervals that hold separately (mean in [0.1, 0.5], RMS
+// in [0.05, 0.6], Hausdorff in [0.2, 0.3]) are narrowed by mean <= RMS <= Hausdorff:
+// RMS in [0.1, 0.3], mean in [0.1, 0.3]; estimates above those ends come down to them.
+TEST(DistanceSummary, ClampsByMeanBelowRmsBelowHausdorff) {
+  DirectedHausdorff h;
+  h.lower = 0.2;
+  h.upper = 0.3;
+  DirectedMeanDistance m;
+  m.mean_lower = 0.1, m.mean = 0.45, m.mean_upper = 0.5;
+  m.rms_lower = 0.05, m.rms = 0.4, m.rms_upper = 0.6;
+  const DistanceSummary s = distance_summary(h, m);
+  EXPECT_DOUBLE_EQ(s.rms.lower, 0.1);
+  EXPECT_DOUBLE_EQ(s.rms.upper, 0.3);
+  EXPECT_DOUBLE_EQ(s.rms.value, 0.3);
+  EXPECT_DOUBLE_EQ(s.mean.upper, 0.3);
+  EXPECT_DOUBLE_EQ(s.mean.value, 0.3);
+  EXPECT_LE(s.mean.value, s.rms.value);
+  EXPECT_DOUBLE_EQ(s.hausdorff.value, 0.2);
+}
+
+// The larger of two directions keeps the order of each.
+TEST(DistanceSummary, MaxOfTwoDirectionsKeepsTheOrder) {
+  const DistanceSummary a{{0.1, 0.2, 0.3}, {0.2, 0.25, 0.35}, {0.4, 0.4, 0.5}};
+  const DistanceSummary b{{0.0, 0.3, 0.4}, {0.3, 0.31, 0.45}, {0.3, 0.3, 0.46}};
+  const DistanceSummary s = max_of(a, b);
+  EXPECT_DOUBLE_EQ(s.mean.value, 0.3);
+  EXPECT_DOUBLE_EQ(s.rms.value, 0.31);
+  EXPECT_DOUBLE_EQ(s.hausdorff.upper, 0.5);
+  EXPECT_LE(s.mean.value, s.rms.value);
+  EXPECT_LE(s.rms.value, s.hausdorff.upper);
+}
+
+// The relative bound: on the one-sided grid pair (mean 1/6, RMS 1/3, see above) the default
+// options stop at 1 % of the lower end, and the interval holds the analytic values.
+TEST(MeanDistance, RelativeBoundHoldsTheAnalyticValues) {
+  const Mesh full = build_mesh(test::grid_soup(3));
+  std::vector<std::pair<int, int>> right;
+  for (int j = 0; j < 3; ++j)
+    right.emplace_back(2, j);
+  const Mesh part = build_mesh(test::grid_without_cells(3, right));
+  const embree::TriangleScene part_scene(part);
+  const auto d = directed_mean_distance(full, part_scene);
+  ASSERT_TRUE(d.converged);
+  EXPECT_LE(d.mean_error, 0.01 * d.mean_lower + 1e-15);
+  EXPECT_LE(d.rms_error, 0.01 * d.rms_lower + 1e-15);
+  EXPECT_LE(d.mean_lower, 1.0 / 6.0);
+  EXPECT_GE(d.mean_upper, 1.0 / 6.0);
+  EXPECT_LE(d.rms_lower, 1.0 / 3.0);
+  EXPECT_GE(d.rms_upper, 1.0 / 3.0);
+}
+
+// Where B is flat under A the plane bounds are exact: a tilted square over a plane (the
+// distance affine on it, 0.1 to 0.4) has mean 0.25 and mean square (0.1^2 + 0.1 * 0.4 +
+// 0.4^2) / 3 = 0.07 (a linear ramp), found without splitting the two triangles far.
+TEST(MeanDistance, AffineDistanceIsExactFromThePlaneBounds) {
+  TriangleSoup ramp = test::grid_soup(1);
+  for (auto& p : ramp.points)
+    p[2] = 0.1 + 0.3 * p[0];
+  TriangleSoup floor = test::grid_soup(1);
+  for (auto& p : floor.points)
+    p = Point(p[0] * 4.0 - 1.5, p[1] * 4.0 - 1.5, 0.0);
+  const Mesh a = build_mesh(ramp);
+  const embree::TriangleScene b_scene(build_mesh(floor));
+  MeanDistanceOptions options;
+  options.error_bound = 1e-12;
+  options.relative_error_bound = 0.0;
+  const auto d = directed_mean_distance(a, b_scene, options);
+  ASSERT_TRUE(d.converged);
+  EXPECT_NEAR(d.mean, 0.25, 1e-12);
+  EXPECT_NEAR(d.rms, std::sqrt(0.07), 1e-12);
+  EXPECT_LT(d.queries, 100u);
+}
+
+}  // namespace
+}  // namespace holebench
