@@ -432,7 +432,8 @@ class MeanSearch {
     // (the minimum is at most a, so farther triangles cannot hold it). Only where it can
     // matter: the gap w > bound / 4 and the minimum able to raise lo by more than that.
     const double sampled = std::min({d[0], d[1], d[2], nearest.distance});
-    const double useful = 0.25 * options_.error_bound;
+    const double useful =
+        0.25 * std::max(options_.error_bound, options_.relative_error_bound * sampled);
     if (0.5 * (hi - lo) > useful && sampled - lo > useful && lo < centroid_radius) {
       double minimum = sampled;
       for (int face : scene_.faces_within(centroid, sampled + centroid_radius))
