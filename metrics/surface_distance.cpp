@@ -301,8 +301,8 @@ class MeanSearch {
       Cell cell = queue_.top();
       queue_.pop();
       remove_sums(cell);
-      if (!cell.planes_tried) {
-        tighten(cell);  // exact where B is flat under the cell: often no split needed
+      if (!cell.planes_tried && near_enough_to_tighten(cell)) {
+        tighten(cell);
         enqueue(std::move(cell));
       } else {
         split(cell);
@@ -434,7 +434,8 @@ class MeanSearch {
     const double sampled = std::min({d[0], d[1], d[2], nearest.distance});
     const double useful =
         0.25 * std::max(options_.error_bound, options_.relative_error_bound * sampled);
-    if (0.5 * (hi - lo) > useful && sampled - lo > useful && lo < centroid_radius) {
+    if (0.5 * (hi - lo) > useful && sampled - lo > useful && lo < centroid_radius &&
+        sampled <= 4.0 * centroid_radius) {
       double minimum = sampled;
       for (int face : scene_.faces_within(centroid, sampled + centroid_radius))
         minimum = std::min(minimum, triangle_triangle_distance(c, scene_.triangle_of_face(face)));
@@ -478,14 +479,35 @@ class MeanSearch {
   //  - Several planes (a sharp edge or a curved region of B): m(x) = min over T of s_T a_T(x),
   //    s_T the sign at g, is concave and m <= d, so the cell mean of d is at least the corner
   //    mean of m, and d^2 >= max(0, L)^2 with L the linear interpolant of m's corner values.
-  void tighten(Cell& cell) {
-    cell.planes_tried = true;  // enqueue() counts the candidates' search as one query
+  // The plane bounds can make a cell exact where B is flat under it; they weigh every
+  // triangle of B within hi + R of the cell's centroid (R its radius). Tried only where that
+  // reach is within twice the longest edge of the triangle of B nearest to a corner (a ring
+  // or two of B's triangles) and hi within 4 R; farther out they would weigh many triangles,
+  // and the second-order bounds (error ~ R^2 / distance) do better per query.
+  bool near_enough_to_tighten(const Cell& cell) const {
+    if (cell.corner_face[0] < 0)
+      return false;
+    const auto& t = scene_.triangle_of_face(cell.corner_face[0]);
+    const double edge =
+        std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
+    const double radius = cell_radius(cell);
+    return cell.hi <= 4.0 * radius && cell.hi + radius <= 2.0 * edge;
+  }
+
+  static double cell_radius(const Cell& cell) {
     const auto& c = cell.corners;
     const Point g = (c[0] + c[1] + c[2]) / 3.0;
     double radius = 0.0;
     for (const Point& corner : c)
       radius = std::max(radius, (corner - g).norm());
-    // A triangle farther than hi from the whole cell holds no closest point of it.
+    return radius;
+  }
+
+  void tighten(Cell& cell) {
+    cell.planes_tried = true;  // enqueue() counts the candidates' search as one query
+    const auto& c = cell.corners;
+    const Point g = (c[0] + c[1] + c[2]) / 3.0;
+    const double radius = cell_radius(cell);
     const std::vector<int> candidates = scene_.faces_within(g, cell.hi + radius);
     if (candidates.empty())
       return;
@@ -504,8 +526,8 @@ class MeanSearch {
     std::array<double, 3> m = {std::numeric_limits<double>::infinity(),
                                std::numeric_limits<double>::infinity(),
                                std::numeric_limits<double>::infinity()};
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      const auto& t = scene_.triangle_of_face(candidates[k]);
+    for (int face : candidates) {
+      const auto& t = scene_.triangle_of_face(face);
       if (has_reference) {
         for (const Point& p : t)
           slab = std::max(slab, std::abs(reference.signed_distance(p)));
@@ -536,11 +558,12 @@ class MeanSearch {
         m[i] = std::min(m[i], best[i]);
     }
     double mean_lo = 0.0, square_lo = 0.0;
+    std::array<double, 3> a = {0.0, 0.0, 0.0};  // a_P at the corners
+    double mean_abs = 0.0;                      // the cell's mean of |a_P|
     if (has_reference) {
-      const std::array<double, 3> a = {reference.signed_distance(c[0]),
-                                       reference.signed_distance(c[1]),
-                                       reference.signed_distance(c[2])};
-      const double mean_abs = absolute_mean(a);
+      a = {reference.signed_distance(c[0]), reference.signed_distance(c[1]),
+           reference.signed_distance(c[2])};
+      mean_abs = absolute_mean(a);
       mean_lo = std::max(mean_lo, mean_abs - slab);
       square_lo = std::max(square_lo, linear_square_mean(a) - 2.0 * slab * mean_abs);
     }
@@ -554,10 +577,6 @@ class MeanSearch {
         covered_by(c, reference, candidates)) {
       // Every point x of the cell lies above a point y of B within the slab: d(x) <= |x - y|
       // <= |a_P(x)| + e, so the means are within e of the closed forms (exact where e = 0).
-      const std::array<double, 3> a = {reference.signed_distance(c[0]),
-                                       reference.signed_distance(c[1]),
-                                       reference.signed_distance(c[2])};
-      const double mean_abs = absolute_mean(a);
       // (+ what an uncovered sliver of at most 2e-9 of the cell could add, at most hi there.)
       cell.mean_hi = std::min(cell.mean_hi, mean_abs + slab + 2e-9 * cell.hi);
       cell.square_hi = std::min(cell.square_hi, linear_square_mean(a) + 2.0 * slab * mean_abs +
