@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -188,11 +189,19 @@ TEST(MeshlabHausdorff, NoisyBox) {
 // Ten more pairs from generated cases: the complete model against the holed input (a hole
 // left open), and the hole's true surface (the removed faces) against a displaced copy of
 // it, as a method's patch that misses the truth by a known wobble (1 % of the diagonal).
-class MeshlabCasePairs : public ::testing::TestWithParam<const char*> {};
+class MeshlabCasePairs : public ::testing::TestWithParam<const char*> {
+ protected:
+  // A folder name of its own per pair: CTest runs these tests in parallel.
+  static std::string folder(const std::string& kind) {
+    std::string name = kind + "_" + GetParam();
+    std::replace(name.begin(), name.end(), '/', '_');
+    return name;
+  }
+};
 
 TEST_P(MeshlabCasePairs, CompleteAgainstHoledInput) {
   const Case c = generators::make_case(GetParam());
-  expect_agrees_with_meshlab(c.complete, c.input, "holed", {false, true});
+  expect_agrees_with_meshlab(c.complete, c.input, folder("holed"), {false, true});
 }
 
 TEST_P(MeshlabCasePairs, HolePatchAgainstItsTruth) {
@@ -202,7 +211,7 @@ TEST_P(MeshlabCasePairs, HolePatchAgainstItsTruth) {
     removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
   const Mesh truth = face_subset(c.complete, removed);
   const Mesh patch = test::displaced(truth, 0.01 * bounding_box_diagonal(c.complete));
-  expect_agrees_with_meshlab(patch, truth, "patch", {true, false});
+  expect_agrees_with_meshlab(patch, truth, folder("patch"), {true, false});
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MeshlabCasePairs,
