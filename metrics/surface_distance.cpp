@@ -1,5 +1,6 @@
 #include "metrics/surface_distance.h"
 
+#include "core/plane_fit.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
 
@@ -140,18 +141,14 @@ double absolute_mean(const std::array<double, 3>& v) {
   return positive_part_mean(v, 1) + positive_part_mean({-v[0], -v[1], -v[2]}, 1);
 }
 
-// The plane of a triangle as a unit normal and a point; nullopt for a degenerate triangle.
-struct Plane {
-  Point normal;
-  Point origin;
-  double signed_distance(const Point& x) const { return OpenMesh::dot(normal, x - origin); }
-};
+// The plane of a triangle (unit normal, a corner as its point); false for a degenerate one.
 bool plane_of(const std::array<Point, 3>& t, Plane& plane) {
   const Point n = OpenMesh::cross(t[1] - t[0], t[2] - t[0]);
   const double length = n.norm();
   if (!(length > 0.0))
     return false;
-  plane = {n / length, t[0]};
+  plane.point = t[0];
+  plane.normal = n / length;
   return true;
 }
 
@@ -601,7 +598,7 @@ class MeanSearch {
                         .normalized();
     const Point v = OpenMesh::cross(n, u);
     const auto to_plane = [&](const Point& p) {
-      const Point d = p - plane.origin;
+      const Point d = p - plane.point;
       return Point2{OpenMesh::dot(d, u), OpenMesh::dot(d, v)};
     };
     const Polygon2 cell = {to_plane(c[0]), to_plane(c[1]), to_plane(c[2])};
