@@ -71,6 +71,7 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
       loop.push_back(mesh.from_vertex_handle(h));
   }
   const int n = static_cast<int>(loop.size());
+  const double exact = 1e-9 * std::max(1.0, bounding_box_diagonal_of_points(mesh, loop));
 
   if (k == 1) {
     PlannedFace face{hole.faces[0], {}};
@@ -78,24 +79,49 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
       face.polygon.push_back({v, mesh.point(v)});
     planned.push_back(std::move(face));
   } else {
+    // L_i: the line where the fitted planes of f_{i-1} and f_i meet, the paper's rebuilt
+    // edge. A loop vertex counts as lying on it within the planes' noise (three times their
+    // RMS residual, at most a quarter of the hole's mean edge length, at least 1e-9 of the
+    // hole's extent).
+    struct Line {
+      Point point, direction;
+      Point project(const Point& p) const {
+        return point + direction * OpenMesh::dot(p - point, direction);
+      }
+    };
+    std::vector<Line> lines(k);
+    std::vector<double> tolerance(k);
+    for (int i = 0; i < k; ++i) {
+      const Plane& a = faces.planes[hole.faces[(i + k - 1) % k]].plane;
+      const Plane& b = faces.planes[hole.faces[i]].plane;
+      Point direction = OpenMesh::cross(a.normal, b.normal);
+      direction /= direction.norm();
+      // The point of both planes nearest T_i (the minimum-norm solution of the two plane
+      // equations, relative to T_i).
+      const Point T = hole.transitions[i].position;
+      const double da = -a.signed_distance(T), db = -b.signed_distance(T);
+      const double c = OpenMesh::dot(a.normal, b.normal);
+      const double det = 1.0 - c * c;
+      const double alpha = (da - c * db) / det, beta = (db - c * da) / det;
+      lines[i] = {T + a.normal * alpha + b.normal * beta, direction};
+      const double noise = 3.0 * std::max(a.rms_residual, b.rms_residual);
+      tolerance[i] = std::max(exact, std::min(noise, 0.25 * spacing));
+    }
+    auto on_line = [&](VertexHandle v, int i) {
+      const Point& p = mesh.point(v);
+      return (p - lines[i].project(p)).norm() <= tolerance[i];
+    };
     // Where a hole runs along the faces' common line for a while (one face's triangles are
     // kept there, the other's removed), those edges still exist: the rebuilt edge starts
     // where the loop leaves the line. E_i is that vertex, found from T_i forward through
-    // run i or else backward through run i-1; the loop between E_{i} and E_{i+1} is then the
+    // run i or else backward through run i-1; the loop between E_i and E_{i+1} is then the
     // part face f_i extends.
-    const double tolerance = 1e-9 * std::max(1.0, bounding_box_diagonal_of_points(mesh, loop));
-    auto on_line = [&](VertexHandle v, int a, int b) {
-      const Point& p = mesh.point(v);
-      return std::abs(faces.planes[a].plane.signed_distance(p)) <= tolerance &&
-             std::abs(faces.planes[b].plane.signed_distance(p)) <= tolerance;
-    };
     std::vector<int> split(k);
     for (int i = 0; i < k; ++i) {
-      const int a = hole.faces[(i + k - 1) % k], b = hole.faces[i];
-      int index = run_start[i];
+      const int index = run_start[i];
       const int run_end = i + 1 < k ? run_start[i + 1] : n;
       int forward = index;
-      while (forward + 1 < run_end && on_line(loop[forward + 1], a, b))
+      while (forward + 1 < run_end && on_line(loop[forward + 1], i))
         ++forward;
       if (forward != index) {
         split[i] = forward;
@@ -103,25 +129,31 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
       }
       const int previous_start = run_start[(i + k - 1) % k];
       int backward = index;
-      while (backward != previous_start && on_line(loop[(backward + n - 1) % n], a, b))
+      while (backward != previous_start && on_line(loop[(backward + n - 1) % n], i))
         backward = (backward + n - 1) % n;
       split[i] = backward;
     }
-    // The rebuilt edges: E_i -> S (k = 3) or E_2 -> E_1 (k = 2), through new points.
-    std::vector<std::vector<Corner>> edge_points(k);  // from E_i towards the common end
+    // Q_i: E_i projected onto L_i. The rebuilt edge runs on L_i from Q_i on; its end corner
+    // is E_i itself, which is input and stays where it is (on L_i on clean input; off it by
+    // the noise otherwise). A new end vertex at Q_i would need a short edge E_i -> Q_i that
+    // crosses the rebuilt edge's side whenever noise puts E_i beyond the line, so it is not
+    // made.
+    std::vector<Corner> q(k);
+    for (int i = 0; i < k; ++i)
+      q[i] = {loop[split[i]], lines[i].project(mesh.point(loop[split[i]]))};
+    // The rebuilt edges' inner points, shared by the two faces along each.
+    std::vector<std::vector<Corner>> edge_points(k);  // from Q_i towards the common end
     Corner vs;
     if (k == 3) {
       vs = add_new(*hole.S);
       for (int i = 0; i < 3; ++i) {
-        for (const Point& p : interior_points(mesh.point(loop[split[i]]), *hole.S, spacing)) {
+        // Q_i and S both lie on L_i: the points between them do too.
+        for (const Point& p : interior_points(q[i].position, *hole.S, spacing))
           edge_points[i].push_back(add_new(p));
-        }
       }
     } else {
-      for (const Point& p :
-           interior_points(mesh.point(loop[split[1]]), mesh.point(loop[split[0]]), spacing)) {
-        edge_points[1].push_back(add_new(p));  // from E_2 to E_1
-      }
+      for (const Point& p : interior_points(q[1].position, q[0].position, spacing))
+        edge_points[1].push_back(add_new(p));  // from Q_2 to Q_1
     }
     for (int i = 0; i < k; ++i) {
       const int next = (i + 1) % k;
@@ -138,11 +170,16 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
         face.polygon.insert(face.polygon.end(), edge_points[i].rbegin(), edge_points[i].rend());
       } else if (i == 0) {
         face.polygon.insert(face.polygon.end(), edge_points[1].begin(),
-                            edge_points[1].end());  // E_2 -> E_1
+                            edge_points[1].end());  // Q_2 -> Q_1
       } else {
         face.polygon.insert(face.polygon.end(), edge_points[1].rbegin(),
-                            edge_points[1].rend());  // E_1 -> E_2
+                            edge_points[1].rend());  // Q_1 -> Q_2
       }
+      // Two corners: the part is a single edge on the common line, which the other face's
+      // part closes; nothing to fill.
+      if (face.polygon.size() == 2 && face.polygon[0].vertex.is_valid() &&
+          face.polygon[1].vertex.is_valid())
+        continue;
       planned.push_back(std::move(face));
     }
   }
@@ -155,10 +192,31 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
       points.push_back(c.position);
     const auto triangulation = triangulate_planar_polygon(points, faces.planes[face.region].plane);
     if (!triangulation.ok) {
-      result.error = "face " + std::to_string(face.region) + ": " + triangulation.error;
+      result.error = "face " + std::to_string(face.region) + " (" + std::to_string(points.size()) +
+                     " corners): " + triangulation.error;
       return result;
     }
     triangles.push_back(triangulation.triangles);
+  }
+  // A triangle edge between two existing vertices that the mesh already joins (outside the
+  // hole) would be used three times.
+  for (std::size_t f = 0; f < planned.size(); ++f) {
+    const auto& polygon = planned[f].polygon;
+    const int size = static_cast<int>(polygon.size());
+    for (const auto& t : triangles[f]) {
+      for (int e = 0; e < 3; ++e) {
+        const int a = t[e], b = t[(e + 1) % 3];
+        if ((a + 1) % size == b || (b + 1) % size == a)
+          continue;  // a side of the polygon
+        const VertexHandle va = polygon[a].vertex, vb = polygon[b].vertex;
+        if (va.is_valid() && vb.is_valid() && mesh.find_halfedge(va, vb).is_valid()) {
+          result.error = "face " + std::to_string(planned[f].region) +
+                         ": a closing triangle's diagonal is an existing edge of the mesh "
+                         "(non-manifold)";
+          return result;
+        }
+      }
+    }
   }
 
   const Mesh backup = mesh;

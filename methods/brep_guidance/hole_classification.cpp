@@ -19,19 +19,6 @@ double signed_area(const std::vector<Point>& polygon, const Point& normal) {
   return OpenMesh::dot(sum, normal);
 }
 
-// Mean direction from T into a face, from the hole half-edges of that face next to T.
-Point direction_into_face(const Mesh& mesh, const std::vector<HalfedgeHandle>& run, bool from_start,
-                          int count, const Point& T) {
-  Point sum(0, 0, 0);
-  const int n = static_cast<int>(run.size());
-  for (int j = 0; j < std::min(count, n); ++j) {
-    const auto h = from_start ? run[j] : run[n - 1 - j];
-    const auto v = from_start ? mesh.to_vertex_handle(h) : mesh.from_vertex_handle(h);
-    sum += mesh.point(v) - T;
-  }
-  return sum;
-}
-
 double largest_diameter(const std::vector<Point>& points) {
   double d = 0.0;
   for (const Point& p : points) {
@@ -43,42 +30,102 @@ double largest_diameter(const std::vector<Point>& points) {
 
 }  // namespace
 
+Figure3 figure_3(const Point& T, const Point& n_i, const Point& n_j, const Point& h_i,
+                 const Point& h_j, const std::vector<Point>& path_i,
+                 const std::vector<Point>& path_j, int halfedges) {
+  Figure3 f;
+  // pi has the normal m = n_i x n_j.
+  Point m = OpenMesh::cross(n_i, n_j);
+  const double m_length = m.norm();
+  if (m_length > 0.0)
+    m /= m_length;
+  auto project = [&](const Point& p) {
+    const Point d = p - T;
+    return d - m * OpenMesh::dot(d, m);
+  };
+  // Each face lies to the left of its transition half-edge; the offset of that direction
+  // along the other face's normal is unchanged by the projection onto pi.
+  auto side = [](const Point& n, const Point& h, const Point& n_other) {
+    const double offset = OpenMesh::dot(OpenMesh::cross(n, h), n_other);
+    return offset < 0.0 ? -1 : offset > 0.0 ? 1 : 0;
+  };
+  // The overlap: the length, in pi, of the projected hole half-edges on `side` of g_other.
+  auto overlap = [&](const std::vector<Point>& path, const Point& n_other, int side) {
+    double sum = 0.0;
+    Point previous = T;
+    const std::size_t count =
+        halfedges > 0 ? std::min<std::size_t>(path.size(), halfedges) : path.size();
+    for (std::size_t e = 0; e < count; ++e) {
+      const Point a = project(previous), b = project(path[e]);
+      previous = path[e];
+      const double da = side * OpenMesh::dot(a, n_other);
+      const double db = side * OpenMesh::dot(b, n_other);
+      const double length = (b - a).norm();
+      if (da >= 0.0 && db >= 0.0)
+        sum += length;
+      else if (da > 0.0 || db > 0.0)
+        sum += length * std::max(da, db) / (std::abs(da) + std::abs(db));
+    }
+    return sum;
+  };
+  // Without a transition half-edge (0), the face's first hole half-edge at t whose
+  // projection is more than a point stands in for its ray.
+  auto side_of_path = [&](const std::vector<Point>& path, const Point& n_other) {
+    Point previous = T;
+    for (const Point& p : path) {
+      const Point a = project(previous), b = project(p);
+      if ((b - a).norm() > 1e-3 * (p - previous).norm()) {
+        const double offset = OpenMesh::dot(b, n_other);
+        if (offset != 0.0)
+          return offset < 0.0 ? -1 : 1;
+      }
+      previous = p;
+    }
+    return 0;
+  };
+  f.side_i = side(n_i, h_i, n_j);
+  if (f.side_i == 0 && h_i.norm() == 0.0)
+    f.side_i = side_of_path(path_i, n_j);
+  f.side_j = side(n_j, h_j, n_i);
+  if (f.side_j == 0 && h_j.norm() == 0.0)
+    f.side_j = side_of_path(path_j, n_i);
+  if (f.side_i < 0 && f.side_j < 0) {
+    f.convexity = Convexity::Convex;  // case (a)
+    return f;
+  }
+  if (f.side_i > 0 && f.side_j > 0) {
+    f.convexity = Convexity::Reflex;  // case (b)
+    return f;
+  }
+  // Cases (c) and (d).
+  f.decided_by_overlap = true;
+  f.a_i = f.side_i != 0 ? overlap(path_i, n_j, f.side_i) : 0.0;
+  f.a_j = f.side_j != 0 ? overlap(path_j, n_i, f.side_j) : 0.0;
+  const int decisive = f.a_i >= f.a_j ? f.side_i : f.side_j;
+  f.convexity = decisive <= 0 ? Convexity::Convex : Convexity::Reflex;
+  return f;
+}
+
+Figure3 figure_3(const Mesh& mesh, const BrepFaces& faces, const Hole& hole, int i,
+                 const ClassificationOptions& options) {
+  const int k = hole.k();
+  const int l = (i + k - 1) % k;
+  // The loop passes from f_j = f_{i-1} (run l, ending in t_i) to f_i (run i, starting there).
+  std::vector<Point> path_i, path_j;
+  for (auto h : hole.runs[i])
+    path_i.push_back(mesh.point(mesh.to_vertex_handle(h)));
+  for (auto it = hole.runs[l].rbegin(); it != hole.runs[l].rend(); ++it)
+    path_j.push_back(mesh.point(mesh.from_vertex_handle(*it)));
+  const Transition& t = hole.transitions[i];
+  return figure_3(t.position, normal_of(faces, hole.faces[i]), normal_of(faces, hole.faces[l]),
+                  t.direction, t.direction_previous, path_i, path_j, options.projected_halfedges);
+}
+
 std::pair<Convexity, bool> transition_convexity(const Mesh& mesh, const BrepFaces& faces,
                                                 const Hole& hole, int i,
                                                 const ClassificationOptions& options) {
-  const int k = hole.k();
-  const int l = (i + k - 1) % k;
-  const Point n_l = normal_of(faces, hole.faces[l]);
-  const Point n_i = normal_of(faces, hole.faces[i]);
-  const Point T = hole.transitions[i].position;
-  // The plane pi through T_i with normal n_l x n_i is orthogonal to both faces; projected
-  // onto it, each face is a half-line g from T_i.
-  Point axis = OpenMesh::cross(n_l, n_i);
-  const double axis_length = axis.norm();
-  auto project = [&](Point d) {
-    if (axis_length > 0.0)
-      d -= axis * (OpenMesh::dot(d, axis) / (axis_length * axis_length));
-    return d;
-  };
-  // The hole half-edges next to t_i: the end of run l (face f_{i-1}) and the start of run i.
-  const Point w_l =
-      project(direction_into_face(mesh, hole.runs[l], false, options.projected_halfedges, T));
-  const Point w_i =
-      project(direction_into_face(mesh, hole.runs[i], true, options.projected_halfedges, T));
-  // Where does each face lie relative to the other's plane? Below it (against its normal)
-  // on both sides: the faces meet convex; above it on both: reflex.
-  const double side_i = OpenMesh::dot(w_i, n_l);
-  const double side_l = OpenMesh::dot(w_l, n_i);
-  if (side_i < 0.0 && side_l < 0.0)
-    return {Convexity::Convex, false};
-  if (side_i > 0.0 && side_l > 0.0)
-    return {Convexity::Reflex, false};
-  // The two undefined cases of figure 3: the face whose projected hole half-edges reach
-  // farther onto the other side of the other face's line (the larger overlap a) decides.
-  const double a_i = std::abs(side_i);
-  const double a_l = std::abs(side_l);
-  const double decisive = a_i >= a_l ? side_i : side_l;
-  return {decisive < 0.0 ? Convexity::Convex : Convexity::Reflex, true};
+  const Figure3 f = figure_3(mesh, faces, hole, i, options);
+  return {f.convexity, f.decided_by_overlap};
 }
 
 BoundaryKind boundary_kind(const Mesh& mesh, const BrepFaces& faces, const Hole& hole, int i) {

@@ -26,10 +26,45 @@ struct Classification {
 
 struct ClassificationOptions {
   double structure_size = 1.0;  ///< delta_s, model units
-  /// How many hole half-edges on each side of a transition vertex are projected onto the
-  /// plane pi to find on which side of the other face a face lies (figure 3).
-  int projected_halfedges = 3;
+  /// How many hole half-edges of each face, from the transition vertex on, are projected
+  /// onto the plane pi for the overlaps a_i, a_j of figure 3 (0: the face's whole run).
+  int projected_halfedges = 0;
 };
+
+/// Figure 3 at one transition vertex t between faces f_i and f_j, in the plane pi through T
+/// with normal n_i x n_j. Each face's plane cuts pi in a line through T, g_i and g_j; a
+/// point's side of g_j is the sign of its offset along n_j (n_j is orthogonal to pi's
+/// normal, so projecting onto pi keeps it). h_i and h_j are the faces' transition half-edges
+/// at t (each face on its left, as in a B-Rep): f_i lies to the left of h_i, along n_i x h_i,
+/// which projected onto pi is one of the two rays of g_i; likewise f_j along n_j x h_j. Where
+/// they lie gives the four cases:
+///   (a) f_i's ray below g_j and f_j's ray below g_i (against the normals): convex;
+///   (b) both above: reflex;
+///   (c), (d) one below and one above: undefined. This needs h_i and h_j not to be twins:
+///       for twins both tests are the same triple product. The overlaps decide: a_i is the
+///       length of f_i's hole half-edges, projected onto pi, on f_i's side of g_j (a
+///       half-edge that crosses g_j counts for its part beyond it), a_j likewise; the face
+///       with the larger overlap gives the answer.
+struct Figure3 {
+  Convexity convexity = Convexity::Convex;
+  bool decided_by_overlap = false;  ///< cases (c), (d)
+  int side_i = 0;                   ///< f_i's side of g_j: -1 below, +1 above, 0 undefined
+  int side_j = 0;                   ///< f_j's side of g_i
+  double a_i = 0.0;                 ///< overlap of f_i's projected hole half-edges beyond g_j
+  double a_j = 0.0;                 ///< overlap of f_j's projected hole half-edges beyond g_i
+};
+
+/// The geometry of figure 3. `h_i`, `h_j`: the transition half-edges' directions (f_i's
+/// ends in t, f_j's starts there). `path_i`: f_i's hole vertices after T, walked away from
+/// t; `path_j`: f_j's hole vertices before T, walked away from t (both without T). At most
+/// `halfedges` half-edges of each path count for the overlaps (0: all).
+Figure3 figure_3(const Point& T, const Point& n_i, const Point& n_j, const Point& h_i,
+                 const Point& h_j, const std::vector<Point>& path_i,
+                 const std::vector<Point>& path_j, int halfedges = 0);
+
+/// Figure 3 at transition i of `hole`, between faces f_{i-1} (= f_j) and f_i.
+Figure3 figure_3(const Mesh& mesh, const BrepFaces& faces, const Hole& hole, int i,
+                 const ClassificationOptions& options);
 
 /// Convexity of faces f_{i-1} and f_i at transition i (figure 3), with whether the overlap
 /// rule decided it.

@@ -50,19 +50,37 @@ Point plane_normal(const BrepFaces& faces, int region) {
   return faces.planes[region].plane.normal;
 }
 
-// The direction of the transition half-edge ending in t: an edge at t that is not a hole
-// edge and separates the faces `from` and `to`.
-Point transition_direction(const Mesh& mesh, const BrepFaces& faces, VertexHandle t, int from,
-                           int to) {
-  for (auto h : mesh.vih_range(t)) {
-    if (mesh.is_boundary(h) || mesh.is_boundary(mesh.opposite_halfedge_handle(h)))
-      continue;
-    const int a = faces.face_region[mesh.face_handle(h).idx()];
-    const int b = faces.face_region[mesh.opposite_face_handle(h).idx()];
-    if ((a == from && b == to) || (a == to && b == from)) {
-      const Point d = mesh.point(t) - mesh.point(mesh.from_vertex_handle(h));
-      return d / d.norm();
-    }
+Point unit(const Point& d) {
+  const double length = d.norm();
+  return length > 0.0 ? d / length : Point(0, 0, 0);
+}
+
+bool in_region(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle h, int region) {
+  return !mesh.is_boundary(h) && faces.face_region[mesh.face_handle(h).idx()] == region;
+}
+
+// h_i: the half-edge of f_i's boundary that ends in t, before `first` (the first hole
+// half-edge of f_i, starting in t): turn around t through f_i's triangles.
+Point transition_into(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle first, int region) {
+  HalfedgeHandle h = mesh.prev_halfedge_handle(first);
+  for (std::size_t guard = 0; guard < mesh.n_halfedges(); ++guard) {
+    const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
+    if (!in_region(mesh, faces, o, region))
+      return unit(mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h)));
+    h = mesh.prev_halfedge_handle(o);
+  }
+  return Point(0, 0, 0);
+}
+
+// The half-edge of f_{i-1}'s boundary that starts in t, after `last` (its last hole
+// half-edge, ending in t).
+Point transition_out_of(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle last, int region) {
+  HalfedgeHandle h = mesh.next_halfedge_handle(last);
+  for (std::size_t guard = 0; guard < mesh.n_halfedges(); ++guard) {
+    const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
+    if (!in_region(mesh, faces, o, region))
+      return unit(mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h)));
+    h = mesh.next_halfedge_handle(o);
   }
   return Point(0, 0, 0);
 }
@@ -119,8 +137,9 @@ std::vector<Hole> detect_holes(const Mesh& mesh, const BrepFaces& faces,
         Transition t;
         t.vertex = mesh.from_vertex_handle(hole.runs[i].front());
         t.position = mesh.point(t.vertex);
-        t.direction =
-            transition_direction(mesh, faces, t.vertex, hole.faces[(i + k - 1) % k], hole.faces[i]);
+        t.direction = transition_into(mesh, faces, hole.runs[i].front(), hole.faces[i]);
+        t.direction_previous = transition_out_of(mesh, faces, hole.runs[(i + k - 1) % k].back(),
+                                                 hole.faces[(i + k - 1) % k]);
         hole.transitions.push_back(t);
       }
       for (int i = 0; i < k; ++i) {

@@ -15,8 +15,14 @@ namespace holebench::brep_guidance {
 struct Transition {
   VertexHandle vertex;  ///< t_i: where the hole passes from face f_{i-1} to f_i
   Point position;       ///< T_i
-  Point direction{
-      0, 0, 0};  ///< h_i: unit direction of the transition half-edge ending in t_i (0 if none)
+  /// h_i: the transition half-edge of f_i ending in t_i, as a unit direction. It is the next
+  /// half-edge of f_i's boundary (f_i on its left, as in a B-Rep) before the hole half-edges
+  /// of f_i that start in t_i; usually the edge f_i shares with f_{i-1}. 0 if none.
+  Point direction{0, 0, 0};
+  /// The transition half-edge of f_{i-1} starting in t_i: the half-edge of f_{i-1}'s
+  /// boundary after its hole half-edges that end in t_i (the twin of h_i when the two faces
+  /// share the edge; not necessarily, as the paper notes). 0 if none.
+  Point direction_previous{0, 0, 0};
 };
 
 struct Hole {
