@@ -2,6 +2,7 @@
 
 #include "methods/common/planar_polygon_triangulation.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace holebench::brep_guidance {
@@ -145,7 +146,15 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
     std::vector<std::vector<Corner>> edge_points(k);  // from Q_i towards the common end
     Corner vs;
     if (k == 3) {
-      vs = add_new(*hole.S);
+      // v_s is a new vertex at S, unless the loop already passes through the corner (a face
+      // whose run lies on its two common lines): then that vertex is v_s.
+      const double near = std::min({tolerance[0], tolerance[1], tolerance[2]});
+      VertexHandle corner;
+      for (auto v : loop) {
+        if ((mesh.point(v) - *hole.S).norm() <= near)
+          corner = v;
+      }
+      vs = corner.is_valid() ? Corner{corner, mesh.point(corner)} : add_new(*hole.S);
       for (int i = 0; i < 3; ++i) {
         // Q_i and S both lie on L_i: the points between them do too.
         for (const Point& p : interior_points(q[i].position, *hole.S, spacing))
@@ -175,10 +184,23 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
         face.polygon.insert(face.polygon.end(), edge_points[1].rbegin(),
                             edge_points[1].rend());  // Q_1 -> Q_2
       }
-      // Two corners: the part is a single edge on the common line, which the other face's
-      // part closes; nothing to fill.
-      if (face.polygon.size() == 2 && face.polygon[0].vertex.is_valid() &&
-          face.polygon[1].vertex.is_valid())
+      // A corner met twice in a row (E_i = E_{i+1}, or v_s on the loop) is one corner.
+      auto same = [](const Corner& a, const Corner& b) {
+        return a.vertex.is_valid() ? a.vertex == b.vertex : a.new_index == b.new_index;
+      };
+      std::vector<Corner> corners;
+      for (const Corner& c : face.polygon) {
+        if (corners.empty() || !same(corners.back(), c))
+          corners.push_back(c);
+      }
+      while (corners.size() > 1 && same(corners.back(), corners.front()))
+        corners.pop_back();
+      face.polygon = std::move(corners);
+      // At most two input vertices: the part is at most an edge on the common line, which
+      // the other face's part closes; nothing to fill.
+      if (face.polygon.size() <= 2 &&
+          std::all_of(face.polygon.begin(), face.polygon.end(),
+                      [](const Corner& c) { return c.vertex.is_valid(); }))
         continue;
       planned.push_back(std::move(face));
     }

@@ -268,6 +268,23 @@ TEST(BrepGuidance, NoUserAgreesAndTheRecordCountsRefusals) {
   EXPECT_EQ(guided.holes[0].fallback, "");
 }
 
+// A k = 3 hole whose loop passes through the corner itself: on the faceted cylinder's rim
+// the hole leaves one facet's edge along the common line of two facets and S is a loop
+// vertex. That vertex is v_s, the facet whose run lies on its two common lines has nothing to
+// fill, and the hole closes (under noise the segmentation may see k = 2; it closes too).
+TEST(BrepGuidance, ACornerOnTheLoopIsTheNewCorner) {
+  for (double noise : {0.0, 5.0, 25.0}) {
+    SCOPED_TRACE(noise);
+    const Case c = generators::make_case("solid/cylinder/edge_convex/small", 0, noise);
+    const MethodResult result = run_on(c);
+    ASSERT_EQ(result.holes.size(), 1u);
+    if (noise == 0.0)
+      ASSERT_EQ(result.holes[0].classification->k, 3);  // under noise the facets may merge
+    EXPECT_TRUE(result.holes[0].closed) << result.holes[0].note;
+    EXPECT_TRUE(find_boundary_loops(result.repaired).empty());
+  }
+}
+
 // A hole the paper closes (case a) whose exact closing fails is guided instead, and its
 // report names that stand-in and the reason. The failure is made by hand: one loop vertex of
 // the k = 1 hole in the box's top face is moved, in the face's plane, past the far side of
