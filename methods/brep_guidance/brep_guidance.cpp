@@ -41,6 +41,7 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
 
   ClassificationOptions classification_options;
   classification_options.structure_size = structure_size;
+  classification_options.figure_3_rule = options.figure_3_rule;
   double classify_seconds = 0.0, close_seconds = 0.0, guide_seconds = 0.0;
   std::size_t failed = 0;
   for (std::size_t i = 0; i < holes.size(); ++i) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/planar_segmentation.h"
+#include "methods/brep_guidance/hole_classification.h"
 #include "methods/method.h"
 
 namespace holebench {
@@ -20,6 +21,8 @@ struct BrepGuidanceOptions {
   /// Triple product (k = 3) or cross product (k = 2) of unit normals below which the faces
   /// count as linearly dependent.
   double dependence_tolerance = 1e-3;
+  /// How figure 3 reads the convexity at a transition (hole_classification.h).
+  brep_guidance::Figure3Rule figure_3_rule = brep_guidance::Figure3Rule::TransitionHalfEdges;
   /// Segmentation used when the input has no region ids.
   PlanarSegmentationOptions segmentation;
 };

@@ -19,6 +19,47 @@ double signed_area(const std::vector<Point>& polygon, const Point& normal) {
   return OpenMesh::dot(sum, normal);
 }
 
+// Figure3Rule::NearestHoleVertices: the sum of the vectors from T to the `count` hole
+// vertices of a face next to T.
+Point direction_into_face(const Mesh& mesh, const std::vector<HalfedgeHandle>& run, bool from_start,
+                          int count, const Point& T) {
+  Point sum(0, 0, 0);
+  const int n = static_cast<int>(run.size());
+  for (int j = 0; j < std::min(count, n); ++j) {
+    const auto h = from_start ? run[j] : run[n - 1 - j];
+    const auto v = from_start ? mesh.to_vertex_handle(h) : mesh.from_vertex_handle(h);
+    sum += mesh.point(v) - T;
+  }
+  return sum;
+}
+
+std::pair<Convexity, bool> convexity_by_nearest_hole_vertices(const Mesh& mesh,
+                                                              const BrepFaces& faces,
+                                                              const Hole& hole, int i, int count) {
+  const int k = hole.k();
+  const int l = (i + k - 1) % k;
+  const Point n_l = normal_of(faces, hole.faces[l]);
+  const Point n_i = normal_of(faces, hole.faces[i]);
+  const Point T = hole.transitions[i].position;
+  Point axis = OpenMesh::cross(n_l, n_i);
+  const double axis_length = axis.norm();
+  auto project = [&](Point d) {
+    if (axis_length > 0.0)
+      d -= axis * (OpenMesh::dot(d, axis) / (axis_length * axis_length));
+    return d;
+  };
+  const Point w_l = project(direction_into_face(mesh, hole.runs[l], false, count, T));
+  const Point w_i = project(direction_into_face(mesh, hole.runs[i], true, count, T));
+  const double side_i = OpenMesh::dot(w_i, n_l);
+  const double side_l = OpenMesh::dot(w_l, n_i);
+  if (side_i < 0.0 && side_l < 0.0)
+    return {Convexity::Convex, false};
+  if (side_i > 0.0 && side_l > 0.0)
+    return {Convexity::Reflex, false};
+  const double decisive = std::abs(side_i) >= std::abs(side_l) ? side_i : side_l;
+  return {decisive < 0.0 ? Convexity::Convex : Convexity::Reflex, true};
+}
+
 double largest_diameter(const std::vector<Point>& points) {
   double d = 0.0;
   for (const Point& p : points) {
@@ -124,6 +165,8 @@ Figure3 figure_3(const Mesh& mesh, const BrepFaces& faces, const Hole& hole, int
 std::pair<Convexity, bool> transition_convexity(const Mesh& mesh, const BrepFaces& faces,
                                                 const Hole& hole, int i,
                                                 const ClassificationOptions& options) {
+  if (options.figure_3_rule == Figure3Rule::NearestHoleVertices)
+    return convexity_by_nearest_hole_vertices(mesh, faces, hole, i, options.nearest_hole_vertices);
   const Figure3 f = figure_3(mesh, faces, hole, i, options);
   return {f.convexity, f.decided_by_overlap};
 }

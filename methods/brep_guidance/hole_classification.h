@@ -24,8 +24,23 @@ struct Classification {
   Decision decision = Decision::Guide;
 };
 
+/// How figure 3 finds on which side of the other face's plane each face lies.
+enum class Figure3Rule {
+  /// As written: each face lies to the left of its transition half-edge h_i; the overlaps
+  /// of the projected hole half-edges settle the undefined cases (`figure_3`).
+  TransitionHalfEdges,
+  /// The earlier reading, kept as an alternative: each face's side from the sum of the
+  /// vectors from T_i to its `nearest_hole_vertices` nearest hole vertices, the overlap as
+  /// |w . n_other|. Better on one labelled job of the nightly suite (cad/joint/edge_reflex/
+  /// large at 0 %), worse on 60 brep jobs at 0, 5 and 25 % (docs/methods.md).
+  NearestHoleVertices,
+};
+
 struct ClassificationOptions {
   double structure_size = 1.0;  ///< delta_s, model units
+  Figure3Rule figure_3_rule = Figure3Rule::TransitionHalfEdges;
+  /// Figure3Rule::NearestHoleVertices: hole vertices on each side of t_i that are summed.
+  int nearest_hole_vertices = 3;
   /// How many hole half-edges of each face, from the transition vertex on, are projected
   /// onto the plane pi for the overlaps a_i, a_j of figure 3 (0: the face's whole run).
   int projected_halfedges = 0;

@@ -361,6 +361,33 @@ TEST(BrepGuidance, WeakSpotsAreReadRightFromTheTransitionHalfEdges) {
   EXPECT_GE(checked, 22);  // the twisted face, the multiple-inner-boundary cases, 2 sizes each
 }
 
+// The earlier reading of figure 3, kept as an option: on the twisted face it reads both
+// convexities reversed and, through equation 1, calls the outer hole inner (the weak spot as
+// the paper describes it).
+TEST(BrepGuidance, TheNearestHoleVerticesRuleMisreadsTheTwistedFace) {
+  const Case c = generators::make_case("brep/weak/twisted-face/large");
+  BrepGuidanceOptions options;
+  options.figure_3_rule = brep_guidance::Figure3Rule::NearestHoleVertices;
+  NoUser user;
+  MethodParameters parameters;
+  parameters.structure_size = c.parameters.structure_size;
+  const MethodResult result = BrepGuidanceMethod(options).run(c.input, parameters, user);
+  int checked = 0;
+  for (const auto& truth : c.holes) {
+    if (!truth.labels || truth.labels->known_weak_spot != "twisted_face")
+      continue;
+    const HoleReport* report = report_for(c, result, truth);
+    ASSERT_NE(report, nullptr);
+    std::vector<int> regions = report->classification->regions;
+    auto transitions = report->classification->transitions;
+    ASSERT_TRUE(align(regions, truth.labels->regions, transitions));
+    EXPECT_NE(transitions, truth.labels->transitions);
+    EXPECT_EQ(report->classification->orientation, Orientation::Inner);
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+}
+
 // Figure 3 built by hand. Face f_i lies in the plane z = 0 with n_i = (0,0,1), face f_j in
 // the plane x = 0 with n_j = (1,0,0); they meet along the y axis through T = 0. pi has the
 // normal n_i x n_j = (0,1,0): projecting onto it drops y, so g_i is the x axis and g_j the z
