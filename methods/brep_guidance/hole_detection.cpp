@@ -59,30 +59,77 @@ bool in_region(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle h, int r
   return !mesh.is_boundary(h) && faces.face_region[mesh.face_handle(h).idx()] == region;
 }
 
-// h_i: the half-edge of f_i's boundary that ends in t, before `first` (the first hole
-// half-edge of f_i, starting in t): turn around t through f_i's triangles.
-Point transition_into(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle first, int region) {
-  HalfedgeHandle h = mesh.prev_halfedge_handle(first);
+// How many boundary half-edges of a face, from t on, give the transition half-edge's
+// direction: their chord smooths the staircase of a segmented region's boundary.
+constexpr int kTransitionEdges = 3;
+
+// The half-edge of `region`'s boundary before h (both ending / starting at h's from vertex):
+// turn around that vertex through the region's triangles.
+HalfedgeHandle previous_on_boundary(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle h,
+                                    int region) {
+  HalfedgeHandle g = mesh.prev_halfedge_handle(h);
   for (std::size_t guard = 0; guard < mesh.n_halfedges(); ++guard) {
-    const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
+    const HalfedgeHandle o = mesh.opposite_halfedge_handle(g);
     if (!in_region(mesh, faces, o, region))
-      return unit(mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h)));
-    h = mesh.prev_halfedge_handle(o);
+      return g;
+    g = mesh.prev_halfedge_handle(o);
   }
-  return Point(0, 0, 0);
+  return HalfedgeHandle();
 }
 
-// The half-edge of f_{i-1}'s boundary that starts in t, after `last` (its last hole
-// half-edge, ending in t).
-Point transition_out_of(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle last, int region) {
-  HalfedgeHandle h = mesh.next_halfedge_handle(last);
+// The half-edge of `region`'s boundary after h.
+HalfedgeHandle next_on_boundary(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle h,
+                                int region) {
+  HalfedgeHandle g = mesh.next_halfedge_handle(h);
   for (std::size_t guard = 0; guard < mesh.n_halfedges(); ++guard) {
-    const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
+    const HalfedgeHandle o = mesh.opposite_halfedge_handle(g);
     if (!in_region(mesh, faces, o, region))
-      return unit(mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h)));
-    h = mesh.next_halfedge_handle(o);
+      return g;
+    g = mesh.next_halfedge_handle(o);
   }
-  return Point(0, 0, 0);
+  return HalfedgeHandle();
+}
+
+int region_across(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle h) {
+  const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
+  return mesh.is_boundary(o) ? -1 : faces.face_region[mesh.face_handle(o).idx()];
+}
+
+// h_i: the boundary of f_i (`region`) that ends in t, before `first` (the first hole
+// half-edge of f_i, starting in t), as the unit chord of its last kTransitionEdges half-edges
+// along the same neighbouring face.
+Point transition_into(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle first, int region) {
+  HalfedgeHandle h = previous_on_boundary(mesh, faces, first, region);
+  if (!h.is_valid())
+    return Point(0, 0, 0);
+  const Point end = mesh.point(mesh.to_vertex_handle(h));
+  const int neighbour = region_across(mesh, faces, h);
+  Point start = mesh.point(mesh.from_vertex_handle(h));
+  for (int e = 1; e < kTransitionEdges && neighbour >= 0; ++e) {
+    h = previous_on_boundary(mesh, faces, h, region);
+    if (!h.is_valid() || region_across(mesh, faces, h) != neighbour)
+      break;
+    start = mesh.point(mesh.from_vertex_handle(h));
+  }
+  return unit(end - start);
+}
+
+// The boundary of f_{i-1} (`region`) that starts in t, after `last` (its last hole half-edge,
+// ending in t), likewise.
+Point transition_out_of(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle last, int region) {
+  HalfedgeHandle h = next_on_boundary(mesh, faces, last, region);
+  if (!h.is_valid())
+    return Point(0, 0, 0);
+  const Point start = mesh.point(mesh.from_vertex_handle(h));
+  const int neighbour = region_across(mesh, faces, h);
+  Point end = mesh.point(mesh.to_vertex_handle(h));
+  for (int e = 1; e < kTransitionEdges && neighbour >= 0; ++e) {
+    h = next_on_boundary(mesh, faces, h, region);
+    if (!h.is_valid() || region_across(mesh, faces, h) != neighbour)
+      break;
+    end = mesh.point(mesh.to_vertex_handle(h));
+  }
+  return unit(end - start);
 }
 
 // The point common to three planes, or nothing when they are (nearly) dependent.

@@ -17,7 +17,8 @@ struct Transition {
   Point position;       ///< T_i
   /// h_i: the transition half-edge of f_i ending in t_i, as a unit direction. It is the next
   /// half-edge of f_i's boundary (f_i on its left, as in a B-Rep) before the hole half-edges
-  /// of f_i that start in t_i; usually the edge f_i shares with f_{i-1}. 0 if none.
+  /// of f_i that start in t_i; usually the edge f_i shares with f_{i-1}. The chord of up to
+  /// three such boundary half-edges along the same neighbouring face. 0 if none.
   Point direction{0, 0, 0};
   /// The transition half-edge of f_{i-1} starting in t_i: the half-edge of f_{i-1}'s
   /// boundary after its hole half-edges that end in t_i (the twin of h_i when the two faces
