@@ -123,46 +123,6 @@ std::vector<Point> crossings(const std::vector<std::vector<Point>>& polylines, c
   return points;
 }
 
-// Natural cubic spline through (x_i, y_i), x increasing, evaluated at x; linear beyond the
-// ends with the end slopes.
-double natural_spline(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  const std::size_t n = x.size();
-  if (n == 1)
-    return y[0];
-  std::vector<double> m(n, 0.0);  // second derivatives
-  if (n > 2) {
-    std::vector<double> c(n, 0.0), r(n, 0.0);
-    for (std::size_t i = 1; i + 1 < n; ++i) {
-      const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
-      const double a = h0 / 6.0, b = (h0 + h1) / 3.0, cc = h1 / 6.0;
-      const double rhs = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
-      const double denom = b - a * c[i - 1];
-      c[i] = cc / denom;
-      r[i] = (rhs - a * r[i - 1]) / denom;
-    }
-    for (std::size_t i = n - 2; i >= 1; --i) {
-      m[i] = r[i] - c[i] * m[i + 1];
-      if (i == 1)
-        break;
-    }
-  }
-  auto slope = [&](std::size_t i, bool at_left) {
-    const double h = x[i + 1] - x[i];
-    const double base = (y[i + 1] - y[i]) / h;
-    return at_left ? base - h * (2.0 * m[i] + m[i + 1]) / 6.0
-                   : base + h * (m[i] + 2.0 * m[i + 1]) / 6.0;
-  };
-  if (at <= x[0])
-    return y[0] + slope(0, true) * (at - x[0]);
-  if (at >= x[n - 1])
-    return y[n - 1] + slope(n - 2, false) * (at - x[n - 1]);
-  const std::size_t i =
-      std::min<std::size_t>(n - 2, std::upper_bound(x.begin(), x.end(), at) - x.begin() - 1);
-  const double h = x[i + 1] - x[i], a = (x[i + 1] - at) / h, b = (at - x[i]) / h;
-  return a * y[i] + b * y[i + 1] +
-         ((a * a * a - a) * m[i] + (b * b * b - b) * m[i + 1]) * h * h / 6.0;
-}
-
 struct Frame {
   Point origin, d, e, n;
 };
@@ -262,32 +222,6 @@ std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>&
   return portions;
 }
 
-double Section::height(double w) const {
-  const std::size_t n = samples.size();
-  if (n == 1)
-    return samples[0].second;
-  auto lerp = [&](std::size_t i, double at) {
-    const auto [w0, h0] = samples[i];
-    const auto [w1, h1] = samples[i + 1];
-    return h0 + (h1 - h0) * (at - w0) / (w1 - w0);
-  };
-  if (w <= samples[0].first)
-    return lerp(0, w);
-  if (w >= samples[n - 1].first)
-    return lerp(n - 2, w);
-  const auto it = std::upper_bound(samples.begin(), samples.end(), std::make_pair(w, -1e300));
-  return lerp(static_cast<std::size_t>(it - samples.begin()) - 1, w);
-}
-
-Point LoftedPatch::evaluate(double u, double w) const {
-  std::vector<double> us, hs;
-  for (const auto& s : sections) {
-    us.push_back(s.u);
-    hs.push_back(s.height(w));
-  }
-  return origin + d * u + e * w + n * natural_spline(us, hs, u);
-}
-
 LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& portion,
                          const std::vector<int>& face_region,
                          const CompositeSurfaceOptions& options) {
@@ -373,9 +307,7 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
     const std::vector<Point> targets =
         crossings(portion.missing_edges, patch.origin, patch.d, section.u);
 
-    std::vector<Point> points;  // everything on the section, in 3D
     auto add_traced = [&](const std::vector<Point>& traced) {
-      points.insert(points.end(), traced.begin(), traced.end());
       section.traced.insert(section.traced.end(), traced.begin(), traced.end());
     };
     // Traces from the end of a piece away from it: `outward` runs from that end inwards.
@@ -387,7 +319,8 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
         return increasing ? patch.w_of(p) > w_stop : patch.w_of(p) < w_stop;
       });
     };
-    // One-sided extension at an end of the section, bent through a missing-edge crossing.
+    // One-sided extension at an end of the section, bent through a missing-edge crossing;
+    // the points beyond the piece's end, going away from it.
     auto extend_end = [&](const SlicePiece& piece, bool right) {
       std::vector<Point> outward = piece.points;
       if (right)
@@ -401,49 +334,57 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
           target = &t;
       }
       const double limit = right ? w_max + margin : w_min - margin;
+      std::vector<Point> beyond;
       if (target) {
         const double wt = patch.w_of(*target);
         const auto traced = trace_from(outward, right ? wt + margin : wt - margin, right);
-        auto bent = bend_to(traced, *target, trace.step);
-        add_traced(bent);
-        points.push_back(*target);
+        beyond = bend_to(traced, *target, trace.step);
+        add_traced(beyond);
+        beyond.push_back(*target);
       } else if (right ? w_end < limit : w_end > limit) {
-        auto traced = trace_from(outward, limit, right);
-        traced.erase(traced.begin());
-        add_traced(traced);
+        beyond = trace_from(outward, limit, right);
+        beyond.erase(beyond.begin());
+        add_traced(beyond);
       }
+      return beyond;
     };
 
-    extend_end(kept.front(), false);
+    // The section in its own order: the left extension, the pieces with the traced gaps
+    // between them (hole, hole to island, ...), the right extension.
+    std::vector<Point> points = extend_end(kept.front(), false);
+    std::reverse(points.begin(), points.end());
     for (std::size_t k = 0; k < kept.size(); ++k) {
       points.insert(points.end(), kept[k].points.begin(), kept[k].points.end());
       if (k + 1 == kept.size())
         break;
-      // A gap (the hole, between hole and island, ...): traced from both of its ends.
+      // A gap: traced from both of its ends and blended.
       std::vector<Point> left(kept[k].points.rbegin(), kept[k].points.rend());
       const std::vector<Point>& right = kept[k + 1].points;
       const double wl = patch.w_of(left.front()), wr = patch.w_of(right.front());
       const auto from_left = trace_from(left, wr + margin, true);
       const auto from_right = trace_from(right, wl - margin, false);
-      add_traced(bridge(from_left, from_right, trace.step));
+      const auto gap = bridge(from_left, from_right, trace.step);
+      add_traced(gap);
+      points.insert(points.end(), gap.begin(), gap.end());
     }
-    extend_end(kept.back(), true);
-
-    for (const Point& p : points)
-      section.samples.push_back({patch.w_of(p), OpenMesh::dot(p - patch.origin, patch.n)});
-    std::stable_sort(section.samples.begin(), section.samples.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<std::pair<double, double>> unique;
-    for (const auto& s : section.samples) {
-      if (unique.empty() || s.first > unique.back().first + 1e-9 * edge)
-        unique.push_back(s);
-    }
-    section.samples = std::move(unique);
-    if (section.samples.size() >= 2)
+    const auto right_end = extend_end(kept.back(), true);
+    points.insert(points.end(), right_end.begin(), right_end.end());
+    section.points = std::move(points);
+    if (section.points.size() >= 2)
       patch.sections.push_back(std::move(section));
   }
   if (patch.sections.size() < 2) {
     patch.error = "fewer than two section curves";
+    return patch;
+  }
+  std::vector<SectionPolyline> polylines;
+  for (const auto& section : patch.sections)
+    polylines.push_back({section.u, section.points});
+  LoftOptions loft;
+  loft.sample_spacing = options.section_sample_edges * edge;
+  patch.surface = LoftedSurface::loft(patch.origin, patch.d, polylines, loft);
+  if (!patch.surface.ok()) {
+    patch.error = patch.surface.error();
     return patch;
   }
   patch.ok = true;

@@ -2,11 +2,13 @@
 // bounded by the segment and the missing edges); per portion, the influencing triangles of
 // its region (and the islands') sliced by planes advanced along the longer edge of the
 // portion's box; section curves traced with curvature continuity from the slice points on
-// the boundary (hole to island to hole); the sections lofted into a smooth patch. Adjacent
+// the boundary (hole to island to hole); the sections lofted into a smooth patch
+// (lofted_surface.h). Adjacent
 // patches share the missing edges' points, which stitches them into the composite surface.
 #pragma once
 
 #include "methods/slice_loft/hole_structures.h"
+#include "methods/slice_loft/lofted_surface.h"
 
 #include <string>
 #include <vector>
@@ -47,28 +49,33 @@ struct CompositeSurfaceOptions {
   double baseline_edges = 2.0;  ///< spacing of the points a trace takes curvature from
   double step_edges = 0.25;     ///< tracing step along a section
   double max_turn_degrees = 20.0;
+  /// Arc-length spacing of the grid the sections are lofted through (mean edge lengths).
+  double section_sample_edges = 0.5;
 };
 
-/// One section curve: the slice of the mesh plus the traced curves across the gaps, as a
-/// height function h(w) over the slice's line in the portion's frame.
+/// One section curve: the slice of the mesh plus the curves traced across the gaps, in
+/// order along the section (a polyline in the plane dot(p - origin, d) = u).
 struct Section {
   double u = 0.0;
-  std::vector<std::pair<double, double>> samples;  ///< (w, h), w increasing
+  std::vector<Point> points;
   std::vector<Point> traced;  ///< the discrete points generated in the gaps (3D)
-  double height(double w) const;
 };
 
-/// A lofted patch over the portion's frame: S(u, w) = origin + u d + w e + H(u, w) n, with H
-/// a natural cubic spline across the sections at fixed w.
+/// A portion's patch: the frame it was sliced in (d the slicing direction, n the mean normal,
+/// e = n x d), its sections, and the surface lofted through them, S(u, s) with s the arc
+/// length along the sections (lofted_surface.h).
 struct LoftedPatch {
   Point origin, d, e, n;
   std::vector<Section> sections;
+  LoftedSurface surface;
   bool ok = false;
   std::string error;
 
   double u_of(const Point& p) const { return OpenMesh::dot(p - origin, d); }
   double w_of(const Point& p) const { return OpenMesh::dot(p - origin, e); }
-  Point evaluate(double u, double w) const;
+  /// The surface's parameters (u, s) of a point near it: trimming works in this domain.
+  std::array<double, 2> parameters(const Point& p) const { return surface.parameters(p); }
+  Point evaluate(double u, double s) const { return surface.evaluate(u, s); }
 };
 
 LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& portion,

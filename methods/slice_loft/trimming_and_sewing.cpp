@@ -48,7 +48,12 @@ double signed_area(const std::vector<Vec2>& loop) {
 PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedPatch& patch,
                                            double edge_length, const TessellationOptions& options) {
   PatchTessellation result;
-  auto parameters = [&](const Point& p) { return Vec2{patch.u_of(p), patch.w_of(p)}; };
+  // Trimming on the surface: every boundary point is taken into the surface's own (u, s)
+  // domain by projecting it onto the surface (section 4.5).
+  auto parameters = [&](const Point& p) {
+    const auto [u, s] = patch.parameters(p);
+    return Vec2{u, s};
+  };
   std::vector<std::vector<Vec2>> loops(1);
   for (const auto& node : portion.boundary)
     loops[0].push_back(parameters(node.position));
@@ -78,7 +83,7 @@ PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedP
   if (options.direct) {
     for (const auto& section : patch.sections) {
       for (const Point& p : section.traced) {
-        const Vec2 q = parameters(p);
+        const Vec2 q = parameters(p);  // p lies on its section, so on the surface
         if (!admissible(q))
           continue;
         bool crowded = false;
