@@ -63,7 +63,8 @@ struct MissingFeatures {
   std::vector<MissingEdge> edges;  ///< one per segment end, in segment order
   int corner = -1;                 ///< index into `points` of the missing corner, -1 if none
   bool through_edge = false;       ///< two ends joined by one edge (no corner)
-  std::string note;                ///< why features were not used, if so
+  bool straight = false;  ///< that edge joined straight: the traces led away from each other
+  std::string note;       ///< why features were not used, if so
 };
 
 }  // namespace holebench::slice_loft

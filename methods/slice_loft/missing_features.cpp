@@ -126,7 +126,20 @@ MissingFeatures reconstruct_missing_features(const Mesh& mesh, Hole& hole,
                               start_direction(features.edges[1])) < options.through_edge_cosine) {
     // One missing edge through the hole: traced from both ends and blended.
     features.through_edge = true;
-    for (const Point& p : bridge(features.edges[0].trace, features.edges[1].trace, edge)) {
+    // Both traces must head into the gap between the two ends. Where the region-boundary
+    // edges at the ends lead away from it (the feature line ends at the hole: nothing to take
+    // its curvature from), the edge is joined with zero curvature, a straight line.
+    const std::vector<Point>& trace_a = features.edges[0].trace;
+    const std::vector<Point>& trace_b = features.edges[1].trace;
+    const Point a = trace_a.front(), b = trace_b.front();
+    std::vector<Point> from_a = trace_a, from_b = trace_b;
+    if (OpenMesh::dot(start_direction(features.edges[0]), b - a) <= 0.0 ||
+        OpenMesh::dot(start_direction(features.edges[1]), a - b) <= 0.0) {
+      from_a = {a, b};
+      from_b = {b, a};
+      features.straight = true;
+    }
+    for (const Point& p : bridge(from_a, from_b, edge)) {
       features.points.push_back(p);
       features.edges[0].points.push_back(static_cast<int>(features.points.size()) - 1);
     }

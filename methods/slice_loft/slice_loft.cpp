@@ -114,7 +114,8 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
     clock.features += seconds_since(start);
     if (!features.edges.empty()) {
       note << "; " << (features.through_edge ? 1 : features.edges.size()) << " missing edge(s)"
-           << (features.corner >= 0 ? " and a missing corner" : "");
+           << (features.corner >= 0 ? " and a missing corner" : "")
+           << (features.straight ? " (joined straight: the feature lines end at the hole)" : "");
     } else if (!features.note.empty()) {
       note << "; missing features not rebuilt: " << features.note;
     }
