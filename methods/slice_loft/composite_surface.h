@@ -76,6 +76,11 @@ struct LoftedPatch {
   /// The surface's parameters (u, s) of a point near it: trimming works in this domain.
   std::array<double, 2> parameters(const Point& p) const { return surface.parameters(p); }
   Point evaluate(double u, double s) const { return surface.evaluate(u, s); }
+  /// The surface point over (u, w) of the portion's plane (the sections are graphs over w
+  /// where this is used).
+  Point point_over_plane(double u, double w) const {
+    return surface.point_with_coordinate(u, e, w);
+  }
 };
 
 LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& portion,

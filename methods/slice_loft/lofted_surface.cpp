@@ -59,6 +59,29 @@ Value evaluate_spline(const std::vector<double>& x, const std::vector<Value>& y,
          (m[i] * (a * a * a - a) + m[i + 1] * (b * b * b - b)) * (h * h / 6.0);
 }
 
+// First and second derivatives of the spline at `at` (beyond the ends: the end slope, 0).
+template <typename Value>
+std::pair<Value, Value> spline_derivatives(const std::vector<double>& x,
+                                           const std::vector<Value>& y, const std::vector<Value>& m,
+                                           double at, Value zero) {
+  const std::size_t n = x.size();
+  if (n == 1)
+    return {zero, zero};
+  const bool before = at <= x[0], after = at >= x[n - 1];
+  const std::size_t i =
+      before ? 0
+      : after
+          ? n - 2
+          : std::min<std::size_t>(n - 2, std::upper_bound(x.begin(), x.end(), at) - x.begin() - 1);
+  const double h = x[i + 1] - x[i];
+  const double clamped = std::clamp(at, x[i], x[i + 1]);
+  const double a = (x[i + 1] - clamped) / h, b = (clamped - x[i]) / h;
+  const Value first = (y[i + 1] - y[i]) / h - m[i] * ((3.0 * a * a - 1.0) * h / 6.0) +
+                      m[i + 1] * ((3.0 * b * b - 1.0) * h / 6.0);
+  const Value second = (before || after) ? zero : m[i] * a + m[i + 1] * b;
+  return {first, second};
+}
+
 std::vector<Point> without_repeats(const std::vector<Point>& points, double tolerance) {
   std::vector<Point> kept;
   for (const Point& p : points) {
@@ -77,6 +100,10 @@ NaturalCubicSpline::NaturalCubicSpline(std::vector<double> x, std::vector<Point>
 
 Point NaturalCubicSpline::operator()(double at) const {
   return evaluate_spline(x_, y_, second_, at);
+}
+
+std::pair<Point, Point> NaturalCubicSpline::derivatives(double at) const {
+  return spline_derivatives(x_, y_, second_, at, Point(0, 0, 0));
 }
 
 std::vector<double> NaturalCubicSpline::weights(const std::vector<double>& x, double at) {
@@ -171,6 +198,53 @@ Point LoftedSurface::evaluate(double u, double s) const {
   return p;
 }
 
+Point LoftedSurface::point_with_coordinate(double u, const Point& axis, double value) const {
+  const std::vector<double> w = NaturalCubicSpline::weights(u_, u);
+  auto coordinate_at = [&](double s, Point* point, double* slope) {
+    Point q(0, 0, 0), first(0, 0, 0);
+    for (std::size_t k = 0; k < along_.size(); ++k) {
+      q += along_[k](s) * w[k];
+      first += along_[k].derivatives(s).first * w[k];
+    }
+    *point = q;
+    *slope = OpenMesh::dot(first, axis);
+    return OpenMesh::dot(q - origin_, axis);
+  };
+  // The crossing on the curve through the grid points, nearest to the section's middle ...
+  std::vector<double> g(s_.size(), 0.0);
+  for (std::size_t k = 0; k < grid_.size(); ++k) {
+    for (std::size_t j = 0; j < s_.size(); ++j)
+      g[j] += OpenMesh::dot(grid_[k][j] - origin_, axis) * w[k];
+  }
+  double at = s_.front();
+  if ((value < g.front()) == (value < g.back())) {
+    // No crossing: continue linearly from the nearer end.
+    const bool front = std::abs(value - g.front()) < std::abs(value - g.back());
+    at = front ? s_.front() : s_.back();
+  } else {
+    for (std::size_t j = 0; j + 1 < g.size(); ++j) {
+      if ((g[j] <= value) != (g[j + 1] <= value)) {
+        at = s_[j] + (value - g[j]) / (g[j + 1] - g[j]) * (s_[j + 1] - s_[j]);
+        break;
+      }
+    }
+  }
+  // ... then Newton's method on the spline (exact in one step where it is affine).
+  Point point;
+  double slope = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    const double coordinate = coordinate_at(at, &point, &slope);
+    if (!(std::abs(slope) > 1e-12))
+      break;
+    const double next = at - (coordinate - value) / slope;
+    if (!(std::abs(next - at) < s_[1] - s_[0]))
+      break;
+    at = next;
+  }
+  coordinate_at(at, &point, &slope);
+  return point;
+}
+
 std::array<double, 2> LoftedSurface::parameters(const Point& p) const {
   const double u = u_of(p);
   const std::vector<double> w = NaturalCubicSpline::weights(u_, u);
@@ -219,7 +293,27 @@ std::array<double, 2> LoftedSurface::parameters(const Point& p) const {
       fe = distance2(e);
     }
   }
-  return {u, 0.5 * (a + b)};
+  // Newton's method on (S - p) . S_s = 0 polishes s to rounding precision (exact in one step
+  // where the surface is affine, so collinear boundary points stay collinear in (u, s)).
+  double at = 0.5 * (a + b);
+  for (int i = 0; i < 4; ++i) {
+    Point q(0, 0, 0), first(0, 0, 0), second(0, 0, 0);
+    for (std::size_t k = 0; k < along_.size(); ++k) {
+      q += along_[k](at) * w[k];
+      const auto [d1, d2] = along_[k].derivatives(at);
+      first += d1 * w[k];
+      second += d2 * w[k];
+    }
+    const double f = OpenMesh::dot(q - p, first);
+    const double df = OpenMesh::dot(first, first) + OpenMesh::dot(q - p, second);
+    if (!(df > 0.0))
+      break;
+    const double next = at - f / df;
+    if (!(std::abs(next - at) < step))
+      break;
+    at = next;
+  }
+  return {u, at};
 }
 
 }  // namespace holebench::slice_loft

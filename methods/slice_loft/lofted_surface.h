@@ -36,6 +36,8 @@ class NaturalCubicSpline {
   NaturalCubicSpline() = default;
   NaturalCubicSpline(std::vector<double> x, std::vector<Point> y);
   Point operator()(double at) const;
+  /// First and second derivatives at `at`.
+  std::pair<Point, Point> derivatives(double at) const;
   /// The weights w_i with spline(at) = sum_i w_i y_i (the spline is linear in its data).
   static std::vector<double> weights(const std::vector<double>& x, double at);
 
@@ -57,6 +59,9 @@ class LoftedSurface {
   double u_of(const Point& p) const { return OpenMesh::dot(p - origin_, d_); }
   /// S(u, s).
   Point evaluate(double u, double s) const;
+  /// The point of the curve S(u, .) whose coordinate dot(S - origin, axis) is `value` (the
+  /// first crossing along s; the nearer end continued linearly if none).
+  Point point_with_coordinate(double u, const Point& axis, double value) const;
   /// The parameters (u, s) of the surface point nearest p in p's own section plane.
   std::array<double, 2> parameters(const Point& p) const;
 

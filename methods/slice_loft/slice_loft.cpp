@@ -40,7 +40,7 @@ struct PhaseClock {
 std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, const Hole& hole,
                  const MissingFeatures& features, const std::vector<int>& face_region,
                  const SliceLoftOptions& options, PhaseClock& clock, SewingResult& sewn,
-                 bool use_regions) {
+                 bool use_regions, std::string& remark) {
   auto start = Clock::now();
   std::vector<Portion> portions = hole_portions(holed, found.contours, hole, features, face_region);
   if (!use_regions) {
@@ -65,6 +65,13 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
       clock.sewing += seconds_since(start);
       return "trimming: " + tessellations.back().error;
     }
+  }
+  std::size_t on_surface = 0;
+  for (const auto& t : tessellations)
+    on_surface += t.domain == TrimmingDomain::Surface ? 1 : 0;
+  if (on_surface > 0) {
+    remark = std::to_string(on_surface) + " of " + std::to_string(portions.size()) +
+             " portion(s) trimmed on the surface (the boundary folds in the portion's plane)";
   }
   sewn = sew_patches(mesh, portions, tessellations, features);
   clock.sewing += seconds_since(start);
@@ -126,18 +133,22 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
       report.fallback = kOnePortionWithoutFeatures;
 
     SewingResult sewn;
+    std::string remark;
     std::string error = fill(result.repaired, holed, found, hole, features, face_region, options,
-                             clock, sewn, true);
+                             clock, sewn, true, remark);
     if (!error.empty()) {
       // Fall back: the whole hole as one portion, slicing every influencing triangle.
       report.fallback = kOnePortionWithoutFeatures;
       note << "; " << error << "; filled as one portion without features";
       const MissingFeatures none;
-      error =
-          fill(result.repaired, holed, found, hole, none, face_region, options, clock, sewn, false);
+      remark.clear();
+      error = fill(result.repaired, holed, found, hole, none, face_region, options, clock, sewn,
+                   false, remark);
       if (!error.empty())
         note << "; failed again: " << error;
     }
+    if (error.empty() && !remark.empty())
+      note << "; " << remark;
     report.closed = error.empty();
     report.new_faces = sewn.new_faces;
     report.new_vertices = sewn.new_vertices;

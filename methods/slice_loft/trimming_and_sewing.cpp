@@ -45,14 +45,29 @@ double signed_area(const std::vector<Vec2>& loop) {
 
 }  // namespace
 
-PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedPatch& patch,
-                                           double edge_length, const TessellationOptions& options) {
+const char* to_string(TrimmingDomain domain) {
+  return domain == TrimmingDomain::PortionPlane ? "the portion's plane (u, w)"
+                                                : "the surface's (u, s)";
+}
+
+namespace {
+
+PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,
+                                const LoftedPatch& patch, double edge_length,
+                                const TessellationOptions& options) {
   PatchTessellation result;
-  // Trimming on the surface: every boundary point is taken into the surface's own (u, s)
-  // domain by projecting it onto the surface (section 4.5).
+  result.domain = domain;
+  // The parameters of a point near the surface in the chosen domain, and the surface point
+  // of a parameter pair (section 4.5: trimming in the parameter domain).
   auto parameters = [&](const Point& p) {
+    if (domain == TrimmingDomain::PortionPlane)
+      return Vec2{patch.u_of(p), patch.w_of(p)};
     const auto [u, s] = patch.parameters(p);
     return Vec2{u, s};
+  };
+  auto surface_point = [&](Vec2 q) {
+    return domain == TrimmingDomain::PortionPlane ? patch.point_over_plane(q.x, q.y)
+                                                  : patch.evaluate(q.x, q.y);
   };
   std::vector<std::vector<Vec2>> loops(1);
   for (const auto& node : portion.boundary)
@@ -83,7 +98,7 @@ PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedP
   if (options.direct) {
     for (const auto& section : patch.sections) {
       for (const Point& p : section.traced) {
-        const Vec2 q = parameters(p);  // p lies on its section, so on the surface
+        const Vec2 q = parameters(p);
         if (!admissible(q))
           continue;
         bool crowded = false;
@@ -110,7 +125,7 @@ PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedP
         if (!admissible({u, w}))
           continue;
         interior_2d.push_back({u, w});
-        result.interior.push_back(patch.evaluate(u, w));
+        result.interior.push_back(surface_point({u, w}));
       }
     }
   }
@@ -126,6 +141,7 @@ PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedP
   for (const Vec2& p : interior_2d)
     interior_points.push_back({p.x, p.y});
   const PolygonTriangulation2d facets = triangulate_polygon_2d(loops_2d, interior_points);
+  result.failure = facets.failure;
   switch (facets.failure) {
     case TriangulationFailure::None:
       break;
@@ -156,6 +172,24 @@ PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedP
   }
   result.ok = true;
   return result;
+}
+
+}  // namespace
+
+PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedPatch& patch,
+                                           double edge_length, const TessellationOptions& options) {
+  // The portion's plane first: exact for the planar portions most holes consist of. Where the
+  // boundary folds over in that plane, on the surface itself.
+  PatchTessellation in_plane =
+      tessellate_in(TrimmingDomain::PortionPlane, portion, patch, edge_length, options);
+  if (in_plane.ok || in_plane.failure == TriangulationFailure::ShortLoop)
+    return in_plane;
+  PatchTessellation on_surface =
+      tessellate_in(TrimmingDomain::Surface, portion, patch, edge_length, options);
+  if (on_surface.ok)
+    return on_surface;
+  on_surface.error = in_plane.error + "; on the surface too: " + on_surface.error;
+  return on_surface;
 }
 
 SewingResult sew_patches(Mesh& mesh, const std::vector<Portion>& portions,

@@ -4,6 +4,7 @@
 // conform to them), and the facets sewn into the mesh along those edges.
 #pragma once
 
+#include "methods/common/planar_polygon_triangulation.h"
 #include "methods/slice_loft/composite_surface.h"
 
 #include <array>
@@ -20,16 +21,26 @@ struct TessellationOptions {
   bool direct = false;
 };
 
+/// Where a patch is trimmed: the portion's plane (u, w), a projection that is exact and
+/// keeps collinear boundary points collinear, or the surface's own domain (u, s), s the arc
+/// length along the sections, which stays one to one where the boundary folds over in the
+/// plane (a hole around an edge or a curved face).
+enum class TrimmingDomain { PortionPlane, Surface };
+const char* to_string(TrimmingDomain domain);
+
 /// Facets of one trimmed patch. Triangle indices: the portion's boundary nodes first, then
 /// the islands' nodes in order, then `interior`. Oriented like the mesh (they use the
 /// boundary halfedges).
 struct PatchTessellation {
   std::vector<Point> interior;
   std::vector<std::array<int, 3>> triangles;
+  TrimmingDomain domain = TrimmingDomain::PortionPlane;
+  TriangulationFailure failure = TriangulationFailure::None;
   bool ok = false;
   std::string error;
 };
 
+/// Trims in the portion's plane, and where the boundary folds there, on the surface.
 PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedPatch& patch,
                                            double edge_length,
                                            const TessellationOptions& options = {});

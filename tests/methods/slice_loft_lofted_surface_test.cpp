@@ -123,3 +123,35 @@ TEST(SliceLoftLoftedSurface, SplineWeightsReproduceLinearData) {
 
 }  // namespace
 }  // namespace holebench::slice_loft
+
+namespace holebench::slice_loft {
+namespace {
+
+// A plane cut into sections of different extents: the map to (u, s) is affine, so collinear
+// points (a feature line across the sections) stay collinear: trimming sees no false fold.
+TEST(SliceLoftLoftedSurface, PlaneParametersAreAffine) {
+  const Point d = Point(0.158811, -0.987309, 0).normalized();
+  const Point e = OpenMesh::cross(Point(0, 0, -1), d);
+  const Point origin(0.364, -0.0054, -0.1033);
+  std::vector<SectionPolyline> sections;
+  for (int k = 0; k < 14; ++k) {
+    SectionPolyline section;
+    section.u = -0.0426 + 0.00675 * k;
+    const double lo = -0.03 - 0.004 * (k % 3), hi = 0.02 + 0.003 * (k % 4);
+    for (double w = lo; w <= hi; w += 0.0031)
+      section.points.push_back(origin + d * section.u + e * w);
+    sections.push_back(std::move(section));
+  }
+  LoftOptions options;
+  options.sample_spacing = 0.0039;
+  const LoftedSurface surface = LoftedSurface::loft(origin, d, sections, options);
+  ASSERT_TRUE(surface.ok());
+  for (double y = -0.039; y < 0.03; y += 0.0041) {
+    const Point p(0.375, y, -0.1033);
+    const auto [u, s] = surface.parameters(p);
+    EXPECT_NEAR(s, OpenMesh::dot(p - origin, e), 1e-12) << "y = " << y;
+  }
+}
+
+}  // namespace
+}  // namespace holebench::slice_loft

@@ -208,5 +208,34 @@ TEST(SliceLoft, OutputIsClosedAndManifold) {
   }
 }
 
+// Trimming on the surface (4.5): a corner hole one of whose portions folds over in its own
+// plane (the traced missing edges cross its segment there) is trimmed in the lofted
+// surface's (u, s) domain and filled on the paper's path, without a fallback.
+TEST(SliceLoft, PortionFoldedInItsPlaneIsTrimmedOnTheSurface) {
+  const Case c = generators::make_case("brep/k3/inner/convex-reflex-reflex/small");
+  const MethodResult result = run_loft(c);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const HoleReport& hole = result.holes[0];
+  EXPECT_TRUE(hole.closed) << notes(result);
+  EXPECT_EQ(hole.fallback, "") << notes(result);
+  EXPECT_NE(hole.note.find("trimmed on the surface"), std::string::npos) << notes(result);
+  EXPECT_TRUE(find_boundary_loops(result.repaired).empty()) << notes(result);
+  for (auto v : result.repaired.vertices())
+    EXPECT_TRUE(result.repaired.is_manifold(v));
+  for (auto v : c.input.vertices())
+    EXPECT_EQ(result.repaired.point(v), c.input.point(v));
+}
+
+// A missing edge whose feature line ends at the hole (the traces from both ends lead away
+// from each other) is joined straight and the hole is filled on the paper's path.
+TEST(SliceLoft, MissingEdgeEndingAtTheHoleIsJoinedStraight) {
+  const MethodResult result =
+      run_loft(generators::make_case("brep/k2/outer/convex/inner-outer/small"));
+  ASSERT_EQ(result.holes.size(), 1u);
+  EXPECT_TRUE(result.holes[0].closed) << notes(result);
+  EXPECT_EQ(result.holes[0].fallback, "") << notes(result);
+  EXPECT_NE(result.holes[0].note.find("joined straight"), std::string::npos) << notes(result);
+}
+
 }  // namespace
 }  // namespace holebench
