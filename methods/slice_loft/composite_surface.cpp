@@ -127,10 +127,10 @@ struct Frame {
   Point origin, d, e, n;
 };
 
-// The portion's frame: n the mean normal of its triangles, d along the longer edge of the
-// box of its boundary in the plane normal to n.
+// The portion's frame: n the mean normal of its triangles, d the slicing direction in the
+// plane normal to n (the major axis of the boundary there, or the paper's longer box edge).
 Frame portion_frame(const Mesh& mesh, const std::vector<FaceHandle>& faces,
-                    const std::vector<Point>& boundary) {
+                    const std::vector<Point>& boundary, SlicingDirection direction) {
   Frame frame;
   Point n(0, 0, 0);
   for (auto f : faces)
@@ -155,6 +155,28 @@ Frame portion_frame(const Mesh& mesh, const std::vector<FaceHandle>& faces,
   }
   const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);  // major axis
   frame.d = (a * std::cos(angle) + b * std::sin(angle)).normalized();
+  if (direction == SlicingDirection::LongerBoxEdge) {
+    // Section 4.4: "along the longer edge of the bounding box" of the portion: the model's
+    // axis along which the portion's box is longest (among the axes not along n), in the
+    // plane normal to n.
+    Point low = boundary.front(), high = boundary.front();
+    for (const Point& p : boundary) {
+      low.minimize(p);
+      high.maximize(p);
+    }
+    double longest = -1.0;
+    for (int k = 0; k < 3; ++k) {
+      Point axis(0, 0, 0);
+      axis[k] = 1.0;
+      const Point in_plane = axis - frame.n * OpenMesh::dot(axis, frame.n);
+      if (in_plane.norm() < 0.5)
+        continue;
+      if (high[k] - low[k] > longest) {
+        longest = high[k] - low[k];
+        frame.d = in_plane.normalized();
+      }
+    }
+  }
   frame.e = OpenMesh::cross(frame.n, frame.d);
   return frame;
 }
@@ -238,7 +260,7 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
   std::vector<Point> boundary;
   for (const auto& node : portion.boundary)
     boundary.push_back(node.position);
-  const Frame frame = portion_frame(mesh, faces, boundary);
+  const Frame frame = portion_frame(mesh, faces, boundary, options.direction);
   patch.origin = frame.origin;
   patch.d = frame.d;
   patch.e = frame.e;

@@ -40,7 +40,13 @@ std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>&
                                    const Hole& hole, const MissingFeatures& features,
                                    const std::vector<int>& face_region);
 
+/// The direction the slicing plane advances in: the paper's longer edge of the portion's
+/// bounding box (a model axis), or the major axis of the portion's boundary in its plane
+/// (the default: it closes more holes on the paper's path, docs/slice_loft.md).
+enum class SlicingDirection { LongerBoxEdge, MajorAxis };
+
 struct CompositeSurfaceOptions {
+  SlicingDirection direction = SlicingDirection::MajorAxis;  /// measured: docs/slice_loft.md
   /// Slices across the longer edge of the portion's box (the paper's offset as a count) ...
   int slices = 10;
   /// ... but at most this many mean boundary-edge lengths apart.
