@@ -70,6 +70,65 @@ std::vector<VertexHandle> neighbourhood(const Mesh& mesh, VertexHandle v,
   return result;
 }
 
+// Whether each vertex lies within `rings` rings of a boundary vertex (every vertex when
+// rings <= 0 or the mesh has no boundary).
+std::vector<char> band_around_boundaries(const Mesh& mesh, int rings) {
+  std::vector<char> in_band(mesh.n_vertices(), rings <= 0 ? 1 : 0);
+  if (rings <= 0)
+    return in_band;
+  std::vector<VertexHandle> front;
+  for (auto v : mesh.vertices()) {
+    if (mesh.is_boundary(v)) {
+      in_band[v.idx()] = 1;
+      front.push_back(v);
+    }
+  }
+  if (front.empty())
+    return std::vector<char>(mesh.n_vertices(), 1);
+  for (int ring = 1; ring <= rings && !front.empty(); ++ring) {
+    std::vector<VertexHandle> next;
+    for (auto u : front) {
+      for (auto w : mesh.vv_range(u)) {
+        if (!in_band[w.idx()]) {
+          in_band[w.idx()] = 1;
+          next.push_back(w);
+        }
+      }
+    }
+    front = std::move(next);
+  }
+  return in_band;
+}
+
+// The faces whose three vertices lie in the band, as a mesh of their own; `origin` maps each
+// of its vertices to the input's.
+Mesh band_mesh(const Mesh& mesh, const std::vector<char>& in_band,
+               std::vector<VertexHandle>& origin) {
+  Mesh band;
+  std::vector<VertexHandle> copy(mesh.n_vertices());
+  for (auto f : mesh.faces()) {
+    std::array<VertexHandle, 3> v;
+    int i = 0;
+    bool inside = true;
+    for (auto u : mesh.fv_range(f)) {
+      inside = inside && in_band[u.idx()];
+      v[i++ % 3] = u;
+    }
+    if (!inside)
+      continue;
+    std::array<VertexHandle, 3> w;
+    for (int k = 0; k < 3; ++k) {
+      if (!copy[v[k].idx()].is_valid()) {
+        copy[v[k].idx()] = band.add_vertex(mesh.point(v[k]));
+        origin.push_back(v[k]);
+      }
+      w[k] = copy[v[k].idx()];
+    }
+    band.add_face(w[0], w[1], w[2]);  // a face OpenMesh refuses (non-manifold) is left out
+  }
+  return band;
+}
+
 }  // namespace
 
 CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options) {
@@ -85,12 +144,15 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
   VectorMap d1, d2;
   const int degree = std::max(3, options.jet_degree);
   const std::size_t needed = static_cast<std::size_t>((degree + 1) * (degree + 2) / 2);
+  // Only a band of rings around the holes is fitted and traced: the crest lines the method
+  // uses are those that reach a hole's boundary.
+  const std::vector<char> in_band = band_around_boundaries(mesh, options.band_rings);
   for (auto v : mesh.vertices()) {
     // Defaults: no curvature, so no ridge crosses an edge at an unfitted vertex.
     k1[v] = k2[v] = b0[v] = b3[v] = p1[v] = p2[v] = 0.0;
     d1[v] = Vector3(1, 0, 0);
     d2[v] = Vector3(0, 1, 0);
-    if (mesh.is_isolated(v))
+    if (mesh.is_isolated(v) || !in_band[v.idx()])
       continue;
     std::vector<Point3> points;
     for (auto u : neighbourhood(mesh, v, options))
@@ -125,6 +187,34 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
     }
   }
 
+  std::vector<VertexHandle> origin;
+  const bool whole = options.band_rings <= 0;
+  const Mesh band = whole ? Mesh() : band_mesh(mesh, in_band, origin);
+  const Mesh& traced = whole ? mesh : band;
+  if (!whole) {
+    ScalarMap bk1, bk2, bb0, bb3, bp1, bp2;
+    VectorMap bd1, bd2;
+    for (auto v : band.vertices()) {
+      const VertexHandle o = origin[v.idx()];
+      bk1[v] = k1[o];
+      bk2[v] = k2[o];
+      bb0[v] = b0[o];
+      bb3[v] = b3[o];
+      bp1[v] = p1[o];
+      bp2[v] = p2[o];
+      bd1[v] = d1[o];
+      bd2[v] = d2[o];
+    }
+    k1.swap(bk1);
+    k2.swap(bk2);
+    b0.swap(bb0);
+    b3.swap(bb3);
+    p1.swap(bp1);
+    p2.swap(bp2);
+    d1.swap(bd1);
+    d2.swap(bd2);
+  }
+
   // CGAL's ridge tracing assumes that every regular triangle is crossed on 0 or 2 edges; a
   // crossing is a sign change of (d_p . d_q) b_p b_q, so that holds where no b and no dot
   // product of principal directions is exactly 0. Planar parts (exact zeros, axis-aligned
@@ -132,7 +222,7 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
   // generic amount, then check every triangle and give up (no crest lines) rather than let
   // CGAL read an unset crossing.
   const Vector3 tilt(0.3141592653589793e-7, 0.2718281828459045e-7, 0.1414213562373095e-7);
-  for (auto v : mesh.vertices()) {
+  for (auto v : traced.vertices()) {
     for (double* b : {&b0[v], &b3[v]}) {
       if (std::abs(*b) < 1e-100)
         *b = 1e-100;
@@ -140,10 +230,10 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
     d1[v] = d1[v] + tilt;
     d2[v] = d2[v] - tilt;
   }
-  for (auto f : mesh.faces()) {
+  for (auto f : traced.faces()) {
     std::array<VertexDescriptor, 3> v;
     int i = 0;
-    for (auto u : mesh.fv_range(f))
+    for (auto u : traced.fv_range(f))
       v[i++ % 3] = u;
     const double regular = (d1[v[0]] * d1[v[1]]) * (d1[v[0]] * d1[v[2]]) * (d1[v[1]] * d1[v[2]]);
     if (regular < 0)
@@ -164,7 +254,7 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
   using Ridges = CGAL::Ridge_approximation<Mesh, ScalarPmap, VectorPmap>;
   ScalarPmap k1m(k1), k2m(k2), b0m(b0), b3m(b3), p1m(p1), p2m(p2);
   VectorPmap d1m(d1), d2m(d2);
-  Ridges ridges(mesh, k1m, k2m, b0m, b3m, d1m, d2m, p1m, p2m);
+  Ridges ridges(traced, k1m, k2m, b0m, b3m, d1m, d2m, p1m, p2m);
   std::vector<Ridges::Ridge_line*> found;
   ridges.compute_crest_ridges(std::back_inserter(found), CGAL::Ridge_order_3);
 
@@ -180,8 +270,8 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
     const bool ravine = type == CGAL::MIN_CREST_RIDGE;
     double k_max_sum = 0.0, k_min_sum = 0.0;
     for (const auto& [h, coord] : *line->line()) {
-      const auto p = mesh.from_vertex_handle(h), q = mesh.to_vertex_handle(h);
-      crest.points.push_back(mesh.point(p) * coord + mesh.point(q) * (1.0 - coord));
+      const auto p = traced.from_vertex_handle(h), q = traced.to_vertex_handle(h);
+      crest.points.push_back(traced.point(p) * coord + traced.point(q) * (1.0 - coord));
       k_max_sum += coord * k1[p] + (1.0 - coord) * k1[q];
       k_min_sum += coord * k2[p] + (1.0 - coord) * k2[q];
     }

@@ -22,6 +22,9 @@ struct CrestLineOptions {
   double min_mean_curvature_times_edge = 0.15;
   /// ... and if it has at least this many segments.
   int min_segments = 3;
+  /// Curvatures are fitted and crest lines traced only within this many rings of a boundary
+  /// vertex (the holes); 0: over the whole mesh.
+  int band_rings = 12;
 };
 
 enum class CrestType { Ridge, Ravine };

@@ -91,6 +91,46 @@ TEST(CrestLines, FandiskCrestLinesLieAlongItsCreases) {
   EXPECT_GT(static_cast<double>(covered) / sharp_midpoints.size(), 0.95);
 }
 
+// Crest lines are fitted and traced in a band of rings around the holes only. Near the holes,
+// where the method uses them, they are those of the whole mesh: every crest point of the
+// whole-mesh computation within 6 edge lengths of the boundary is a crest point of the band's.
+TEST(CrestLines, BandAroundTheHolesGivesTheWholeMeshLinesNearThem) {
+  const Case c = generators::make_case("crease/fandisk/2");
+  CrestLineOptions whole_options;
+  whole_options.band_rings = 0;
+  const CrestLines whole = detect_crest_lines(c.input, whole_options);
+  const CrestLines band = detect_crest_lines(c.input);
+  const double e = whole.mean_edge_length;
+  std::vector<Point> boundary;
+  for (auto v : c.input.vertices()) {
+    if (c.input.is_boundary(v))
+      boundary.push_back(c.input.point(v));
+  }
+  ASSERT_FALSE(boundary.empty());
+  auto near_hole = [&](const Point& p) {
+    for (const Point& b : boundary) {
+      if ((p - b).norm() <= 6.0 * e)
+        return true;
+    }
+    return false;
+  };
+  std::size_t checked = 0;
+  for (const auto& line : whole.lines) {
+    for (const Point& p : line.points) {
+      if (!near_hole(p))
+        continue;
+      double best = 1e300;
+      for (const auto& other : band.lines) {
+        for (const Point& q : other.points)
+          best = std::min(best, (p - q).norm());
+      }
+      EXPECT_LT(best, 1e-9 * e);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 10u);
+}
+
 // Equation 3 interpolates: q(0) = P1, q(1) = P2; on evenly spaced collinear control points
 // it is the straight line, q(t) = P1 + t (P2 - P1).
 TEST(CatmullRom, Equation3InterpolatesAndIsStraightOnALine) {
