@@ -52,7 +52,8 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     user_seconds += seconds_since(start);
 
     start = Clock::now();
-    const FeatureLines lines = interpolate_feature_lines(hole, features, options.interpolation);
+    const FeatureLines lines =
+        interpolate_feature_lines(hole, features, options.interpolation, &crest);
     interpolation_seconds += seconds_since(start);
 
     start = Clock::now();

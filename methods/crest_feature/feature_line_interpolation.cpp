@@ -37,8 +37,43 @@ std::optional<Point> meeting_point(const std::array<Point, 3>& at,
   return Point(x[0], x[1], x[2]);
 }
 
+Point outer_control_point(const Hole& hole, const FeaturePoint& f, const CrestLines* crest,
+                          double d) {
+  const Point along_tangent = f.position - f.tangent * d;
+  if (!crest || f.crest_line < 0 || f.crest_line >= static_cast<int>(crest->lines.size()))
+    return along_tangent;
+  const std::vector<Point>& points = crest->lines[f.crest_line].points;
+  if (points.size() < 2)
+    return along_tangent;
+  // The crest line runs into the hole at one of its ends: walk from that end outwards.
+  const bool front_at_hole =
+      (points.front() - hole.centroid).norm() < (points.back() - hole.centroid).norm();
+  std::vector<Point> outward{f.position};
+  if (front_at_hole) {
+    outward.insert(outward.end(), points.begin(), points.end());
+  } else {
+    outward.insert(outward.end(), points.rbegin(), points.rend());
+  }
+  // Skip crest points that lie inside the hole's reach, nearer the centroid than F.
+  const double own = (f.position - hole.centroid).norm();
+  std::vector<Point> kept{f.position};
+  for (std::size_t i = 1; i < outward.size(); ++i) {
+    if ((outward[i] - hole.centroid).norm() > own)
+      kept.push_back(outward[i]);
+  }
+  double walked = 0.0;
+  for (std::size_t i = 1; i < kept.size(); ++i) {
+    const double step = (kept[i] - kept[i - 1]).norm();
+    if (walked + step >= d && step > 0.0)
+      return kept[i - 1] + (kept[i] - kept[i - 1]) * ((d - walked) / step);
+    walked += step;
+  }
+  return along_tangent;  // the crest line is shorter than d outside the hole
+}
+
 FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& features,
-                                       const InterpolationOptions& options) {
+                                       const InterpolationOptions& options,
+                                       const CrestLines* crest) {
   FeatureLines result;
   const double a = hole.average_edge_length;  // equation 4
   auto segments = [&](double d) {             // equation 5: t = d / a segments' worth
@@ -57,8 +92,12 @@ FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& fea
     const double d = (f2.position - f1.position).norm();
     if (d == 0.0)
       continue;
-    const Point p0 = f1.position - f1.tangent * d;
-    const Point p3 = f2.position - f2.tangent * d;
+    const Point p0 = options.control_points == ControlPoints::CrestPoints
+                         ? outer_control_point(hole, f1, crest, d)
+                         : f1.position - f1.tangent * d;
+    const Point p3 = options.control_points == ControlPoints::CrestPoints
+                         ? outer_control_point(hole, f2, crest, d)
+                         : f2.position - f2.tangent * d;
     result.lines.push_back(
         {f1.loop_index, f2.loop_index, sample(p0, f1.position, f2.position, p3)});
   }
@@ -78,7 +117,9 @@ FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& fea
       const double d = (*corner - f.position).norm();
       if (d == 0.0)
         continue;
-      const Point p0 = f.position - f.tangent * d;
+      const Point p0 = options.control_points == ControlPoints::CrestPoints
+                           ? outer_control_point(hole, f, crest, d)
+                           : f.position - f.tangent * d;
       const Point p3 = *corner * 2.0 - f.position;
       result.lines.push_back({f.loop_index, -1, sample(p0, f.position, *corner, p3)});
     }

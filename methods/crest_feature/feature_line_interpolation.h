@@ -32,18 +32,26 @@ struct FeatureLines {
   std::optional<Point> corner;     ///< where a corner hole's lines meet
 };
 
+/// Where P0 and P3 of equation 3 come from: the crest line's own point at arc length d
+/// outside the hole (the paper: the adjacent crest points, so the spline carries the crest
+/// line's curvature), or the point at distance d on the fitted tangent line.
+enum class ControlPoints { CrestPoints, TangentLine };
+
 struct InterpolationOptions {
+  ControlPoints control_points = ControlPoints::CrestPoints;
   /// At least this many segments per feature line (>= 2, so that a line always has an
   /// interpolated point and never coincides with an existing edge).
   int min_segments = 2;
 };
 
-/// Control points of a pair (F1, F2): P0 and P3 are the adjacent crest points, taken on
-/// each crest line's fitted direction at distance d = |F1 F2| outward from F1 and F2 (the
-/// uniform spacing equation 3 assumes). Equations 4-5: t advances by a / d, i.e. the line
-/// gets round(d / a) segments. A corner triple's lines run from each F_i to the meeting
-/// point C of the three tangent lines, with P3 = 2C - F_i (straight into the corner).
+/// Control points of a pair (F1, F2): P0 and P3 are the crest points at arc length
+/// d = |F1 F2| outward from F1 and F2 along their crest lines (the uniform spacing equation 3
+/// assumes; on the fitted tangent line where a crest line is shorter, or without `crest`).
+/// Equations 4-5: t advances by a / d, i.e. the line gets round(d / a) segments. A corner triple's
+/// lines run from each F_i to the meeting point C of the three tangent lines, with P3 = 2C - F_i
+/// (straight into the corner).
 FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& features,
-                                       const InterpolationOptions& options = {});
+                                       const InterpolationOptions& options = {},
+                                       const CrestLines* crest = nullptr);
 
 }  // namespace holebench::crest_feature

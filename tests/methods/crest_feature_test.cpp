@@ -131,6 +131,53 @@ TEST(CrestLines, BandAroundTheHolesGivesTheWholeMeshLinesNearThem) {
   EXPECT_GT(checked, 10u);
 }
 
+// Equation 3 with P0 and P3 on the crest lines themselves: a feature line across a hole in a
+// circular crease stays on the circle within 1e-3 of the circle's diagonal (with P0 and P3
+// on the tangent lines it leaves the circle by more: the test can fail).
+TEST(CatmullRom, FeatureLineThroughACircularCreaseStaysOnTheCircle) {
+  const double r = 1.0;
+  auto circle = [&](double angle) { return Point(r * std::cos(angle), r * std::sin(angle), 0); };
+  const double gap = 0.3;  // the hole spans the angles (-gap/2, gap/2): 17 degrees of arc
+  CrestLines crest;
+  for (int side : {-1, 1}) {
+    CrestLine line;
+    for (int k = 0; k <= 40; ++k)  // from the hole outwards
+      line.points.push_back(circle(side * (0.5 * gap + 0.02 * k)));
+    crest.lines.push_back(std::move(line));
+  }
+  Hole hole;
+  hole.centroid = Point(r, 0, 0);
+  hole.radius = 0.4;
+  hole.average_edge_length = 0.05;
+  HoleFeatures features;
+  for (int side : {-1, 1}) {
+    FeaturePoint f;
+    f.loop_index = side < 0 ? 0 : 5;
+    f.position = circle(side * 0.5 * gap);
+    const Point outward = circle(side * (0.5 * gap + 1e-6)) - f.position;
+    f.tangent = -outward.normalized();
+    f.crest_line = side < 0 ? 0 : 1;
+    features.points.push_back(f);
+  }
+  features.pairs.push_back({0, 1});
+  auto worst = [&](ControlPoints control) {
+    InterpolationOptions options;
+    options.control_points = control;
+    const FeatureLines lines = interpolate_feature_lines(hole, features, options, &crest);
+    EXPECT_EQ(lines.lines.size(), 1u);
+    double error = 0.0;
+    for (const auto& line : lines.lines) {
+      EXPECT_FALSE(line.interior.empty());
+      for (const Point& p : line.interior)
+        error = std::max(error, std::abs(p.norm() - r));
+    }
+    return error;
+  };
+  const double diagonal = 2.0 * std::sqrt(2.0) * r;
+  EXPECT_LT(worst(ControlPoints::CrestPoints), 1e-3 * diagonal);
+  EXPECT_GT(worst(ControlPoints::TangentLine), worst(ControlPoints::CrestPoints));
+}
+
 // Equation 3 interpolates: q(0) = P1, q(1) = P2; on evenly spaced collinear control points
 // it is the straight line, q(t) = P1 + t (P2 - P1).
 TEST(CatmullRom, Equation3InterpolatesAndIsStraightOnALine) {
