@@ -37,38 +37,42 @@ std::optional<Point> meeting_point(const std::array<Point, 3>& at,
   return Point(x[0], x[1], x[2]);
 }
 
+// P0 (or P3) for the feature point f: the crest line continued outwards to distance d. The
+// crest points zigzag about the crease by up to an edge length, so the point is not read off
+// the polyline: the crest line's deviation from f's tangent line is fitted by a quadratic in
+// the distance along it, r(tau) = a + b tau + c tau^2 (least squares over the crest points
+// within 2d outside the hole), and P0 = f - d t + r(-d) - a: the crest line's own direction
+// and curvature, without its offset at f.
 Point outer_control_point(const Hole& hole, const FeaturePoint& f, const CrestLines* crest,
                           double d) {
   const Point along_tangent = f.position - f.tangent * d;
   if (!crest || f.crest_line < 0 || f.crest_line >= static_cast<int>(crest->lines.size()))
     return along_tangent;
-  const std::vector<Point>& points = crest->lines[f.crest_line].points;
-  if (points.size() < 2)
-    return along_tangent;
-  // The crest line runs into the hole at one of its ends: walk from that end outwards.
-  const bool front_at_hole =
-      (points.front() - hole.centroid).norm() < (points.back() - hole.centroid).norm();
-  std::vector<Point> outward{f.position};
-  if (front_at_hole) {
-    outward.insert(outward.end(), points.begin(), points.end());
-  } else {
-    outward.insert(outward.end(), points.rbegin(), points.rend());
-  }
-  // Skip crest points that lie inside the hole's reach, nearer the centroid than F.
+  const Point t = f.tangent;
   const double own = (f.position - hole.centroid).norm();
-  std::vector<Point> kept{f.position};
-  for (std::size_t i = 1; i < outward.size(); ++i) {
-    if ((outward[i] - hole.centroid).norm() > own)
-      kept.push_back(outward[i]);
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d rhs = Eigen::Matrix3d::Zero();  // columns: x, y, z of the deviation
+  int count = 0;
+  for (const Point& q : crest->lines[f.crest_line].points) {
+    const double tau = OpenMesh::dot(q - f.position, t);
+    if (tau >= 0.0 || tau < -2.0 * d || (q - hole.centroid).norm() <= own)
+      continue;  // inside the hole's reach, or too far out
+    const Point r = q - f.position - t * tau;
+    const Eigen::Vector3d basis(1.0, tau, tau * tau);
+    normal += basis * basis.transpose();
+    rhs += basis * Eigen::RowVector3d(r[0], r[1], r[2]);
+    ++count;
   }
-  double walked = 0.0;
-  for (std::size_t i = 1; i < kept.size(); ++i) {
-    const double step = (kept[i] - kept[i - 1]).norm();
-    if (walked + step >= d && step > 0.0)
-      return kept[i - 1] + (kept[i] - kept[i - 1]) * ((d - walked) / step);
-    walked += step;
-  }
-  return along_tangent;  // the crest line is shorter than d outside the hole
+  if (count < 4)
+    return along_tangent;
+  const Eigen::LDLT<Eigen::Matrix3d> solver(normal);
+  if (solver.info() != Eigen::Success || !(std::abs(normal.determinant()) > 1e-300))
+    return along_tangent;
+  const Eigen::Matrix3d coefficients = solver.solve(rhs);  // rows: a, b, c
+  const Eigen::RowVector3d deviation = -d * coefficients.row(1) + d * d * coefficients.row(2);
+  if (!deviation.allFinite() || deviation.norm() > d)
+    return along_tangent;
+  return along_tangent + Point(deviation[0], deviation[1], deviation[2]);
 }
 
 FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& features,

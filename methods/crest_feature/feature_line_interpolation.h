@@ -32,21 +32,23 @@ struct FeatureLines {
   std::optional<Point> corner;     ///< where a corner hole's lines meet
 };
 
-/// Where P0 and P3 of equation 3 come from: the crest line's own point at arc length d
-/// outside the hole (the paper: the adjacent crest points, so the spline carries the crest
-/// line's curvature), or the point at distance d on the fitted tangent line.
+/// Where P0 and P3 of equation 3 come from: the crest line continued to distance d outside
+/// the hole by a quadratic fitted to its own points (the paper takes the adjacent crest
+/// points, so that the spline carries the crest line's curvature), or the point at distance
+/// d on the fitted tangent line (the default: on straight creases the crest points' zigzag
+/// bends the feature line, docs/crest_feature.md).
 enum class ControlPoints { CrestPoints, TangentLine };
 
 struct InterpolationOptions {
-  ControlPoints control_points = ControlPoints::CrestPoints;
+  ControlPoints control_points = ControlPoints::TangentLine;
   /// At least this many segments per feature line (>= 2, so that a line always has an
   /// interpolated point and never coincides with an existing edge).
   int min_segments = 2;
 };
 
-/// Control points of a pair (F1, F2): P0 and P3 are the crest points at arc length
-/// d = |F1 F2| outward from F1 and F2 along their crest lines (the uniform spacing equation 3
-/// assumes; on the fitted tangent line where a crest line is shorter, or without `crest`).
+/// Control points of a pair (F1, F2): P0 and P3 at distance d = |F1 F2| outward from F1 and
+/// F2 (the uniform spacing equation 3 assumes), as `options.control_points` says (on the
+/// fitted tangent line where a crest line has too few points, or without `crest`).
 /// Equations 4-5: t advances by a / d, i.e. the line gets round(d / a) segments. A corner triple's
 /// lines run from each F_i to the meeting point C of the three tangent lines, with P3 = 2C - F_i
 /// (straight into the corner).
