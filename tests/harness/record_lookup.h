@@ -1,7 +1,7 @@
 // Test helpers: a job record's values by name.
 #pragma once
 
-#include "harness/job.h"
+#include "harness/run/job.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The walking skeleton end to end: cases -> liepa_cgal -> metrics -> results and PNGs.
-#include "harness/run_command.h"
+#include "harness/run/run_command.h"
 #include "tests/harness/record_lookup.h"
 
 #include <gtest/gtest.h>

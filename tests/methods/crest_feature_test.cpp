@@ -14,7 +14,7 @@
 
 // The oracle user lives in the harness library, which methods_tests does not link; its one
 // translation unit (core only) is compiled into this test.
-#include "harness/oracle_user.h"
+#include "harness/run/oracle_user.h"
 
 #include <gtest/gtest.h>
 

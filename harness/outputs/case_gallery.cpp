@@ -1,0 +1,87 @@
+#include "harness/outputs/case_gallery.h"
+
+#include "core/geometry.h"
+#include "harness/outputs/case_export.h"
+#include "harness/outputs/markup_escape.h"
+#include "harness/outputs/render/case_view.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace holebench::harness {
+
+std::string labels_summary(const Case& c) {
+  std::string text;
+  for (const auto& hole : c.holes) {
+    if (!text.empty())
+      text += "; ";
+    if (!hole.labels) {
+      text += hole.target + " (no labels)";
+      continue;
+    }
+    const auto& l = *hole.labels;
+    std::string transitions;
+    for (auto t : l.transitions)
+      transitions += std::string(transitions.empty() ? "" : ",") + to_string(t);
+    std::string kinds;
+    for (auto b : l.boundary_kinds)
+      kinds += std::string(kinds.empty() ? "" : ",") + to_string(b);
+    text += fmt::format("k={} {}", l.k, to_string(l.orientation));
+    if (!transitions.empty())
+      text += " [" + transitions + "]";
+    if (!kinds.empty())
+      text += " boundary " + kinds;
+    if (l.linearly_dependent_faces)
+      text += " parallel faces";
+    text += fmt::format(" size {:.3g} vs {:.3g}: {}", l.size, l.structure_size,
+                        to_string(l.expected_decision));
+    if (!l.known_weak_spot.empty())
+      text += " (weak spot: " + l.known_weak_spot + ")";
+  }
+  return text;
+}
+
+std::filesystem::path write_case_gallery(const generators::CaseCatalog& catalog,
+                                         const std::vector<generators::CaseDescriptor>& cases,
+                                         const std::filesystem::path& dir,
+                                         const GalleryOptions& options) {
+  std::filesystem::create_directories(dir / "gallery");
+  std::string cells;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Case c = catalog.make(cases[i].id);
+    const std::string file = "gallery/" + case_folder_name(c.id) + ".png";
+    render::SnapshotOptions snapshot;
+    snapshot.width = options.width;
+    snapshot.height = options.height;
+    const auto overlay = render::hole_overlay(c.input, 0.08 * bounding_box_diagonal(c.complete));
+    render::write_png(render::render_snapshot(c.input, render::hole_camera(c), snapshot, overlay),
+                      dir / file);
+    cells += fmt::format(
+        "<figure><img src=\"{}\" width=\"{}\" "
+        "height=\"{}\"><figcaption><b>{}</b><br>{}</figcaption></figure>\n",
+        file, options.width, options.height, xml_escape(c.id), xml_escape(labels_summary(c)));
+    if (options.progress)
+      std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, cases.size(), c.id.c_str());
+  }
+  const auto page = dir / "gallery.html";
+  std::ofstream out(page);
+  out << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>holebench case "
+         "gallery</title>\n"
+         "<style>body{font-family:sans-serif;margin:1em}figure{display:inline-block;margin:6px;"
+         "width:"
+      << options.width
+      << "px;vertical-align:top}figcaption{font-size:11px}</style></head><body>\n"
+         "<h1>holebench case gallery</h1>\n<p>Each case's holed input: regions in colour, the hole "
+         "boundary in red, transition vertices as dark dots, one face normal per region along the "
+         "hole as a black stroke (as in figure 5 of the B-Rep paper). Labels come from the "
+         "construction.</p>\n"
+      << cells << "</body></html>\n";
+  if (!out)
+    throw std::runtime_error("cannot write " + page.string());
+  return page;
+}
+
+}  // namespace holebench::harness

@@ -1,0 +1,43 @@
+#include "harness/outputs/markup_escape.h"
+
+namespace holebench::harness {
+
+/// Escapes text for XML content and attribute values; characters XML 1.0 cannot hold
+/// (control characters other than tab, newline, carriage return) become '?'.
+std::string xml_escape(const std::string& text, bool attribute) {
+  std::string out;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      case '\n':
+        out += attribute ? "&#10;" : "\n";
+        break;
+      case '\r':
+        out += attribute ? "&#13;" : "\r";
+        break;
+      case '\t':
+        out += attribute ? "&#9;" : "\t";
+        break;
+      default:
+        out += (u < 0x20 || u == 0x7f) ? '?' : c;
+    }
+  }
+  return out;
+}
+
+}  // namespace holebench::harness

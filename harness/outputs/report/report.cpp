@@ -1,0 +1,370 @@
+#include "harness/outputs/report/report.h"
+
+#include "harness/outputs/markup_escape.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string_view>
+#include <tuple>
+
+#ifndef HOLEBENCH_SUITES_DIR
+#define HOLEBENCH_SUITES_DIR "suites"
+#endif
+
+namespace holebench::harness::report {
+namespace {
+
+/// The plots the script draws, in the order the HTML shows them, with their captions.
+const std::vector<std::pair<std::string, std::string>>& plot_files() {
+  static const std::vector<std::pair<std::string, std::string>> files{
+      {"error_vs_noise.png",
+       "Median Hausdorff distance and median hole mean distance (relative to the diagonal) "
+       "against the noise level, per method"},
+      {"success_rate.png", "Fraction of jobs with status ok, per case kind and method"},
+      {"time_per_method.png", "Method wall time per job (time_method_s), per method"},
+  };
+  return files;
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out)
+    throw std::runtime_error(path.string() + ": cannot write");
+}
+
+const double* find_metric(const JobRecord& record, const std::string& name) {
+  for (const auto& metric : record.metrics) {
+    if (metric.name == name)
+      return &metric.value;
+  }
+  return nullptr;
+}
+
+std::string case_kind_of(const JobRecord& record) {
+  return record.case_family + "/" + record.case_kind;
+}
+
+std::string html_escape(const std::string& text) {
+  return xml_escape(text, true);
+}
+
+/// A path for an href/src attribute: spaces and the like percent-encoded, then escaped.
+std::string url_path(const std::string& path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) ||
+        std::string_view("/._-~").find(static_cast<char>(c)) != std::string_view::npos) {
+      out += static_cast<char>(c);
+    } else {
+      out += fmt::format("%{:02X}", c);
+    }
+  }
+  return html_escape(out);
+}
+
+std::string shell_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text)
+    out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// --- plot data ------------------------------------------------------------------------------
+
+nlohmann::ordered_json median_or_null(std::vector<double> values) {
+  const auto stats = compute_stats(std::move(values));
+  return stats ? nlohmann::ordered_json(stats->median) : nlohmann::ordered_json();
+}
+
+/// The numbers every plot shows, computed here so that the script only draws them.
+nlohmann::ordered_json plot_data(const ResultsData& data) {
+  std::set<std::string> methods, kinds;
+  std::set<double> noise_levels;
+  for (const auto& r : data.records) {
+    methods.insert(r.job.method_id);
+    kinds.insert(case_kind_of(r));
+    noise_levels.insert(r.job.noise_percent);
+  }
+  nlohmann::ordered_json j;
+  j["methods"] = methods;
+  j["case_kinds"] = kinds;
+  j["noise_percent"] = noise_levels;
+
+  auto& error = j["error_vs_noise"] = nlohmann::ordered_json::object();
+  for (const char* metric : {"hausdorff_rel_diag", "hole_mean_distance_rel_diag"}) {
+    auto& per_method = error[metric] = nlohmann::ordered_json::object();
+    for (const auto& method : methods) {
+      auto& medians = per_method[method] = nlohmann::ordered_json::array();
+      for (double noise : noise_levels) {
+        std::vector<double> values;
+        for (const auto& r : data.records) {
+          const double* v = find_metric(r, metric);
+          if (v && r.job.method_id == method && r.job.noise_percent == noise)
+            values.push_back(*v);
+        }
+        medians.push_back(median_or_null(std::move(values)));
+      }
+    }
+  }
+
+  auto& success = j["success_rate"] = nlohmann::ordered_json::object();
+  for (const auto& method : methods) {
+    auto& rates = success[method] = nlohmann::ordered_json::array();
+    for (const auto& kind : kinds) {
+      std::size_t jobs = 0, ok = 0;
+      for (const auto& r : data.records) {
+        if (r.job.method_id != method || case_kind_of(r) != kind)
+          continue;
+        ++jobs;
+        ok += r.status == JobStatus::Ok ? 1 : 0;
+      }
+      rates.push_back(
+          jobs == 0 ? nlohmann::ordered_json()
+                    : nlohmann::ordered_json(static_cast<double>(ok) / static_cast<double>(jobs)));
+    }
+  }
+
+  auto& times = j["time_method_s"] = nlohmann::ordered_json::object();
+  for (const auto& method : methods) {
+    std::vector<double> values;
+    for (const auto& r : data.records) {
+      if (r.job.method_id != method)
+        continue;
+      if (const double* v = find_metric(r, "time_method_s"))
+        values.push_back(*v);
+    }
+    std::sort(values.begin(), values.end());
+    times[method] = values;
+  }
+  return j;
+}
+
+/// Runs the plot script; returns "" on success, otherwise why there are no plots.
+std::string make_plots(const ResultsData& data, const std::filesystem::path& plots_dir,
+                       const ReportOptions& options) {
+  if (data.records.empty())
+    return "the results file has no records";
+  if (options.python.empty())
+    return "plots were switched off (no Python interpreter given)";
+  if (!std::filesystem::exists(options.python)) {
+    return fmt::format(
+        "no Python interpreter at {} (Debian: apt-get install python3 "
+        "python3-matplotlib)",
+        options.python);
+  }
+  const auto script = options.plot_script.empty() ? default_plot_script() : options.plot_script;
+  if (!std::filesystem::exists(script))
+    return "the plot script " + script.string() + " is missing";
+  const auto data_path = plots_dir / "plot_data.json";
+  const std::string command = fmt::format(
+      "MPLBACKEND=Agg {} {} {} {} 1>&2", shell_quote(options.python), shell_quote(script.string()),
+      shell_quote(data_path.string()), shell_quote(plots_dir.string()));
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const int status = std::system(command.c_str());
+  const int code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (code == 3) {
+    return fmt::format("matplotlib is missing for {} (Debian: apt-get install python3-matplotlib)",
+                       options.python);
+  }
+  if (code != 0)
+    return fmt::format("the plot script failed (exit status {})", code);
+  for (const auto& [file, caption] : plot_files()) {
+    if (!std::filesystem::exists(plots_dir / file))
+      return "the plot script did not write " + file;
+  }
+  return "";
+}
+
+// --- HTML -----------------------------------------------------------------------------------
+
+std::string html_table(const SummaryTable& table) {
+  std::string out =
+      "<table class=\"summary\">\n<thead><tr><th>method</th><th>case kind</th>"
+      "<th>jobs</th><th>ok</th><th>fallback</th>";
+  for (const auto& metric : table.metrics) {
+    out += fmt::format("<th>{}<br>median</th><th>IQR</th>", html_escape(metric));
+  }
+  out += "<th>note</th></tr></thead>\n<tbody>\n";
+  for (const auto& row : table.rows) {
+    const auto share = row.fallback_share();
+    out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>",
+                       row.flagged() ? " class=\"flagged\"" : "", html_escape(row.method),
+                       html_escape(row.case_kind), row.jobs, row.ok,
+                       share ? fmt::format("{:.3g}", *share) : std::string("-"));
+    for (const auto& stats : row.stats) {
+      out += stats ? fmt::format("<td>{:.3g}</td><td>{:.3g}</td>", stats->median, stats->iqr())
+                   : std::string("<td>-</td><td>-</td>");
+    }
+    out += fmt::format("<td>{}</td></tr>\n", html_escape(row.note()));
+  }
+  return out + "</tbody>\n</table>\n";
+}
+
+std::string snapshot_grid(const ResultsData& data) {
+  std::set<std::string> methods;
+  // case id -> (user, noise, seed) -> method -> record
+  using Variant = std::tuple<std::string, double, std::uint64_t>;
+  std::map<std::string, std::map<Variant, std::map<std::string, const JobRecord*>>> cases;
+  for (const auto& r : data.records) {
+    methods.insert(r.job.method_id);
+    cases[r.job.case_id][{r.job.user, r.job.noise_percent, r.job.seed}][r.job.method_id] = &r;
+  }
+  std::string out;
+  for (const auto& [case_id, variants] : cases) {
+    out += fmt::format("<h3 id=\"case-{}\">{}</h3>\n<table class=\"strip\">\n<tr><th></th>",
+                       url_path(case_id), html_escape(case_id));
+    for (const auto& method : methods)
+      out += "<th>" + html_escape(method) + "</th>";
+    out += "</tr>\n";
+    for (const auto& [variant, by_method] : variants) {
+      const auto& [user, noise, seed] = variant;
+      out +=
+          fmt::format("<tr><th>{}<br>noise {} %<br>seed {}</th>", html_escape(user), noise, seed);
+      for (const auto& method : methods) {
+        const auto it = by_method.find(method);
+        if (it == by_method.end()) {
+          out += "<td class=\"none\">no job</td>";
+          continue;
+        }
+        const JobRecord& r = *it->second;
+        std::string caption = to_string(r.status);
+        if (const double* h = find_metric(r, "hausdorff_rel_diag")) {
+          caption += fmt::format(", Hausdorff {:.3g}", *h);
+        }
+        if (r.snapshot.empty()) {
+          out += fmt::format("<td class=\"none\">no snapshot<br>{}</td>", html_escape(caption));
+        } else {
+          out += fmt::format(
+              "<td><a href=\"../{0}\"><img src=\"../{0}\" alt=\"{1}\" width=\"200\" "
+              "loading=\"lazy\"></a><br>{2}</td>",
+              url_path(r.snapshot), html_escape(r.job.id()), html_escape(caption));
+        }
+      }
+      out += "</tr>\n";
+    }
+    out += "</table>\n";
+  }
+  return out;
+}
+
+std::string report_html(const ResultsData& data, const SummaryTable& table,
+                        const std::filesystem::path& results_dir, const std::string& plots_note) {
+  const auto& c = data.context;
+  std::string out =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<title>holebench report</title>\n<style>\n"
+      "body { font-family: sans-serif; margin: 1.5em; }\n"
+      "table { border-collapse: collapse; margin-bottom: 1em; }\n"
+      "th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; "
+      "vertical-align: top; }\n"
+      "td:nth-child(-n+2), table.strip td, table.strip th { text-align: left; }\n"
+      "tr.flagged { background: #fff3cd; }\n"
+      "td.none { color: #888; }\n"
+      "figure { display: inline-block; margin: 0 1em 1em 0; }\n"
+      "</style>\n</head>\n<body>\n<h1>holebench report</h1>\n";
+  out += fmt::format(
+      "<p>Suite <code>{}</code>, code <code>{}</code>, {} build on {}, run {}; {} jobs.</p>\n",
+      html_escape(c.suite), html_escape(c.code_version), html_escape(c.build_type),
+      html_escape(c.host), html_escape(c.created_utc), data.records.size());
+  out +=
+      "<p>Also here: <a href=\"summary.md\">summary.md</a>, <a "
+      "href=\"summary.csv\">summary.csv</a>, "
+      "<a href=\"tables.tex\">tables.tex</a>, <a href=\"../results.json\">results.json</a>.";
+  if (std::filesystem::exists(results_dir / "gallery.html")) {
+    out += " The cases: <a href=\"../gallery.html\">case gallery</a>.";
+  }
+  out += "</p>\n";
+
+  out += "<h2>Summary: method &times; case kind</h2>\n" + html_table(table);
+  out += fmt::format(
+      "<p>Medians over every job of the row that has the metric (all noise levels, seeds and "
+      "users); IQR = q3 - q1. Highlighted rows: <em>few</em> = fewer than {} values in a "
+      "column (add seeds or noise levels); <em>spread</em> = IQR above {:g} % of the median "
+      "(the row mixes cases that behave differently; read results.csv).</p>\n",
+      table.options.min_samples, 100.0 * table.options.max_relative_spread);
+
+  out += "<h2>Plots</h2>\n";
+  if (plots_note.empty()) {
+    for (const auto& [file, caption] : plot_files()) {
+      out += fmt::format(
+          "<figure><img src=\"plots/{0}\" alt=\"{1}\"><figcaption>{1}</figcaption></figure>\n",
+          file, html_escape(caption));
+    }
+    out +=
+        "<p>The numbers plotted: <a href=\"plots/plot_data.json\">plots/plot_data.json</a>.</p>\n";
+  } else {
+    out += "<p class=\"none\">No plots: " + html_escape(plots_note) + ".</p>\n";
+  }
+
+  out +=
+      "<h2>Snapshots</h2>\n<p>Per case, the methods side by side; one row per user, noise "
+      "level and seed. The patch is orange.</p>\n";
+  out += snapshot_grid(data);
+  out += "</body>\n</html>\n";
+  return out;
+}
+
+}  // namespace
+
+std::filesystem::path default_plot_script() {
+  if (const char* path = std::getenv("HOLEBENCH_PLOT_SCRIPT"); path && *path)
+    return path;
+  return std::filesystem::path(HOLEBENCH_SUITES_DIR).parent_path() / "scripts" / "plot_results.py";
+}
+
+std::string console_summary(const ResultsData& data, const ReportOptions& options) {
+  return summary_markdown(data, summarize(data, options.summary));
+}
+
+ReportSummary write_report(const ResultsData& data, const std::filesystem::path& results_dir,
+                           const ReportOptions& options) {
+  ReportSummary summary;
+  summary.dir = results_dir / "report";
+  const auto plots_dir = summary.dir / "plots";
+  std::filesystem::create_directories(plots_dir);
+
+  const SummaryTable table = summarize(data, options.summary);
+  summary.rows = table.rows.size();
+  summary.flagged_rows = static_cast<std::size_t>(std::count_if(
+      table.rows.begin(), table.rows.end(), [](const SummaryRow& r) { return r.flagged(); }));
+
+  write_file(summary.dir / "summary.md", summary_markdown(data, table));
+  write_file(summary.dir / "summary.csv", summary_csv(table));
+  write_file(summary.dir / "tables.tex", summary_latex(table));
+  summary.files = {"summary.md", "summary.csv", "tables.tex"};
+
+  // Plots: stale pictures go first, so that a failed run cannot show an older one.
+  for (const auto& [file, caption] : plot_files())
+    std::filesystem::remove(plots_dir / file);
+  write_file(plots_dir / "plot_data.json", plot_data(data).dump(2) + "\n");
+  summary.files.push_back("plots/plot_data.json");
+  summary.plots_note = make_plots(data, plots_dir, options);
+  summary.plots_written = summary.plots_note.empty();
+  if (summary.plots_written) {
+    for (const auto& [file, caption] : plot_files())
+      summary.files.push_back("plots/" + file);
+  } else if (options.warnings_to_stderr) {
+    std::fprintf(stderr, "holebench report: no plots: %s\n", summary.plots_note.c_str());
+  }
+
+  write_file(summary.dir / "report.html",
+             report_html(data, table, results_dir, summary.plots_note));
+  summary.files.push_back("report.html");
+  std::sort(summary.files.begin(), summary.files.end());
+  return summary;
+}
+
+}  // namespace holebench::harness::report

@@ -1,0 +1,113 @@
+#include "harness/results/results_file.h"
+
+#include "harness/outputs/render/image.h"
+#include "harness/results/record_json.h"
+#include "holebench/version.h"
+
+#include <CGAL/version.h>
+#include <OpenMesh/Core/System/config.h>
+#include <embree3/rtcore_config.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <stdexcept>
+
+namespace holebench::harness {
+
+RunContext current_context(const std::string& suite) {
+  RunContext context;
+  context.code_version = HOLEBENCH_GIT_DESCRIBE;
+  context.build_type = HOLEBENCH_BUILD_TYPE;
+  char host[256] = {0};
+  if (gethostname(host, sizeof(host) - 1) == 0)
+    context.host = host;
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char stamp[32];
+  std::strftime(stamp, sizeof(stamp), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  context.created_utc = stamp;
+  context.suite = suite;
+  context.libraries = {
+      {"holebench", HOLEBENCH_VERSION},
+      {"CGAL", CGAL_VERSION_STR},
+      {"OpenMesh", fmt::format("{}.{}", OM_GET_VER, OM_GET_MAJ)},
+      {"Embree", RTC_VERSION_STRING},
+      {"OpenImageIO", render::openimageio_version()},
+      {"fmt",
+       fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
+      {"nlohmann_json", fmt::format("{}.{}.{}", NLOHMANN_JSON_VERSION_MAJOR,
+                                    NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)},
+      {"compiler", __VERSION__},
+  };
+  return context;
+}
+
+namespace {
+
+// Writes through a temporary file beside `path`, renamed over it once complete: a reader
+// (a report, a shard's status check) never sees a half-written file, even when the process
+// is killed while writing.
+template <typename Write>
+void write_atomically(const std::filesystem::path& path, Write write) {
+  const std::filesystem::path temporary = path.string() + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    if (!out)
+      throw std::runtime_error("cannot write " + path.string());
+    write(out);
+    out.flush();
+    if (!out)
+      throw std::runtime_error("cannot write " + path.string());
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos)
+    return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"')
+      quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+void write_results_json(const std::filesystem::path& path, const RunContext& context,
+                        const std::vector<JobRecord>& records) {
+  nlohmann::ordered_json j;
+  j["context"] = context_to_json(context);
+  j["results"] = nlohmann::ordered_json::array();
+  for (const auto& record : records)
+    j["results"].push_back(record_to_json(record));
+  write_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+void write_results_csv(const std::filesystem::path& path, const std::vector<JobRecord>& records) {
+  write_atomically(path, [&records](std::ostream& out) {
+    out << "job_id,case_id,method,user,seed,case_family,case_kind,noise_percent,status,metric,"
+           "value\n";
+    for (const auto& record : records) {
+      const std::string prefix = fmt::format(
+          "{},{},{},{},{},{},{},{},{}", csv_field(record.job.id()), csv_field(record.job.case_id),
+          csv_field(record.job.method_id), csv_field(record.job.user), record.job.seed,
+          csv_field(record.case_family), csv_field(record.case_kind), record.job.noise_percent,
+          to_string(record.status));
+      if (record.metrics.empty())
+        out << prefix << ",,\n";
+      // fmt's "{}" is the shortest text that reads back to the same double.
+      for (const auto& metric : record.metrics) {
+        out << prefix << ',' << metric.name << ',' << fmt::format("{}", metric.value) << '\n';
+      }
+    }
+  });
+}
+
+}  // namespace holebench::harness

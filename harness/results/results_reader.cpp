@@ -1,0 +1,78 @@
+#include "harness/results/results_reader.h"
+
+#include "core/errors.h"
+#include "harness/results/record_json.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace holebench::harness {
+
+nlohmann::json read_results_document(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw InvalidInputError(path.string() + ": cannot open the results file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    throw InvalidInputError(path.string() + ": not a JSON results file (" + e.what() + ")");
+  }
+  if (!j.is_object() || !j.contains("results") || !j["results"].is_array()) {
+    throw InvalidInputError(path.string() + ": no \"results\" array: not a holebench results file");
+  }
+  return j;
+}
+
+ResultsData read_results_json(const std::filesystem::path& path) {
+  const nlohmann::json j = read_results_document(path);
+  ResultsData data;
+  if (j.contains("context"))
+    data.context = context_from_json(j["context"]);
+  std::size_t index = 0;
+  for (const auto& record : j["results"]) {
+    try {
+      data.records.push_back(record_from_json(record));
+    } catch (const std::exception& e) {
+      throw InvalidInputError(path.string() + ": record " + std::to_string(index) + ": " +
+                              e.what());
+    }
+    ++index;
+  }
+  return data;
+}
+
+JobRecord record_from_json_text(const std::string& json_text) {
+  return record_from_json(nlohmann::json::parse(json_text));
+}
+
+std::string record_to_json_line(const JobRecord& record) {
+  return record_to_json(record).dump();
+}
+
+std::string snapshot_relative_to(const std::string& snapshot, const std::filesystem::path& from_dir,
+                                 const std::filesystem::path& to_dir) {
+  if (snapshot.empty())
+    return snapshot;
+  const auto absolute = std::filesystem::absolute(from_dir / snapshot).lexically_normal();
+  return absolute.lexically_relative(std::filesystem::absolute(to_dir).lexically_normal())
+      .generic_string();
+}
+
+ResultsData merge_results(const std::vector<ResultsData>& sets) {
+  ResultsData merged;
+  if (!sets.empty())
+    merged.context = sets.front().context;
+  std::map<std::string, JobRecord> by_id;
+  for (const auto& set : sets) {
+    for (const auto& record : set.records)
+      by_id[record.job.id()] = record;
+  }
+  for (auto& [id, record] : by_id)
+    merged.records.push_back(std::move(record));
+  return merged;
+}
+
+}  // namespace holebench::harness

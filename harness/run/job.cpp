@@ -1,0 +1,154 @@
+#include "harness/run/job.h"
+
+#include "core/errors.h"
+#include "core/geometry.h"
+#include "generators/case_catalog.h"
+#include "harness/outputs/render/case_view.h"
+#include "harness/outputs/render/snapshot.h"
+#include "harness/run/oracle_user.h"
+#include "methods/common/cgal_random.h"
+#include "methods/registry.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+
+namespace holebench::harness {
+
+std::string Job::id() const {
+  return fmt::format("{}|{}|{}|{}|{}", case_id, method_id, user, noise_percent, seed);
+}
+
+const char* to_string(JobStatus status) {
+  switch (status) {
+    case JobStatus::Ok:
+      return "ok";
+    case JobStatus::Partial:
+      return "partial";
+    case JobStatus::MethodFailed:
+      return "method_failed";
+    case JobStatus::InvalidInput:
+      return "invalid_input";
+    case JobStatus::Error:
+      return "error";
+    case JobStatus::Crash:
+      return "crash";
+    case JobStatus::Timeout:
+      return "timeout";
+  }
+  return "unknown";
+}
+
+namespace {
+
+void copy_holes(const MethodResult& result, JobRecord& record) {
+  for (const auto& hole : result.holes) {
+    HoleRecord h;
+    h.hole_index = hole.hole_index;
+    h.loop_size = hole.loop_size;
+    h.closed = hole.closed;
+    h.new_faces = hole.new_faces;
+    h.note = hole.note;
+    h.fallback = hole.fallback;
+    h.centroid = hole.centroid;
+    h.arrow = hole.arrow;
+    h.classification = hole.classification;
+    record.holes.push_back(std::move(h));
+  }
+}
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+double median_of(std::vector<double> values) {
+  if (values.empty())
+    return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+JobRecord run_job(const Job& job, const JobOptions& options) {
+  JobRecord record;
+  record.job = job;
+  Case c;
+  try {
+    const auto start = Clock::now();
+    seed_cgal_default_random();
+    c = options.catalog ? options.catalog->make(job.case_id, job.seed, job.noise_percent)
+                        : generators::make_case(job.case_id, job.seed, job.noise_percent);
+    record.case_family = c.family;
+    record.case_kind = c.kind;
+    record.stages.push_back({"case", seconds_since(start)});
+  } catch (const std::exception& e) {
+    record.status = JobStatus::InvalidInput;
+    record.message = e.what();
+    return record;
+  }
+
+  try {
+    const auto method = make_method(job.method_id);
+    const std::unique_ptr<User> user = make_user(job.user, c);
+    record.user = user->kind();
+    const auto start = Clock::now();
+    MethodParameters parameters;
+    parameters.structure_size = c.parameters.structure_size;
+    seed_cgal_default_random();
+    MethodResult result = method->run(c.input, parameters, *user);
+    record.method_run_seconds.push_back(seconds_since(start));
+    // Further runs for the timing only, each as the first: a fresh user, the same seed.
+    for (int run = 1; run < options.method_repetitions; ++run) {
+      const std::unique_ptr<User> again_user = make_user(job.user, c);
+      const auto again = Clock::now();
+      seed_cgal_default_random();
+      method->run(c.input, parameters, *again_user);
+      record.method_run_seconds.push_back(seconds_since(again));
+    }
+    record.method_seconds = median_of(record.method_run_seconds);
+    double method_total = 0.0;
+    for (double seconds : record.method_run_seconds)
+      method_total += seconds;
+    record.stages.push_back({"method", method_total});
+    record.user_interventions = user->interventions();
+    record.phases = result.phases;
+    copy_holes(result, record);
+    record.message = result.message;
+    if (result.status == MethodStatus::Failed) {
+      record.status = JobStatus::MethodFailed;
+      return record;
+    }
+    record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
+    const auto evaluation_start = Clock::now();
+    record.metrics = evaluate(c, result, options.evaluation).values;
+    record.stages.push_back({"evaluation", seconds_since(evaluation_start)});
+    record.metrics.push_back({"time_method_s", record.method_seconds});
+    if (!options.snapshot_dir.empty()) {
+      std::string name = job.id();
+      for (char& ch : name) {
+        if (ch == '/' || ch == '|')
+          ch = '_';
+      }
+      const auto path = options.snapshot_dir / (name + ".png");
+      const auto snapshot_start = Clock::now();
+      render::write_png(render::job_snapshot(c, result), path);
+      record.stages.push_back({"snapshot", seconds_since(snapshot_start)});
+      record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
+    }
+  } catch (const InvalidInputError& e) {
+    record.status = JobStatus::InvalidInput;
+    record.message = e.what();
+  } catch (const std::exception& e) {
+    record.status = JobStatus::Error;
+    record.message = e.what();
+  }
+  return record;
+}
+
+}  // namespace holebench::harness

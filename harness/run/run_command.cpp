@@ -1,0 +1,109 @@
+#include "harness/run/run_command.h"
+
+#include "generators/case_catalog.h"
+#include "harness/results/results_file.h"
+#include "harness/run/case_selection.h"
+#include "harness/run/oracle_user.h"
+#include "harness/run/output_folder_lock.h"
+#include "methods/registry.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+namespace holebench::harness {
+
+std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog) {
+  const auto cases = select_cases(
+      catalog, options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+  std::vector<std::string> methods = options.method_ids;
+  if (methods.empty()) {
+    for (const auto& method : make_all_methods())
+      methods.push_back(method->id());
+  } else {
+    for (const auto& id : methods)
+      make_method(id);  // throws for an unknown id
+  }
+  for (const auto& user : options.users)
+    check_user_kind(user);
+  std::vector<Job> jobs;
+  for (const auto& c : cases) {
+    for (const auto& method_id : methods) {
+      for (const auto& user : options.users) {
+        for (double noise : options.noise_levels) {
+          for (auto seed : options.seeds)
+            jobs.push_back({c.id, method_id, noise, seed, user});
+        }
+      }
+    }
+  }
+  return jobs;
+}
+
+RunOptions run_options_from_suite(const Suite& suite) {
+  RunOptions options;
+  options.case_patterns = suite.case_patterns;
+  options.method_ids = suite.methods;
+  options.users = suite.users;
+  options.noise_levels = suite.noise_levels;
+  options.seeds = suite.seeds;
+  options.catalog.include_cad = suite.include_cad;
+  options.evaluation = suite.evaluation;
+  options.runner.timeout_seconds = suite.timeout_seconds;
+  options.method_repetitions = suite.method_repetitions;
+  options.suite_name = suite.name;
+  return options;
+}
+
+generators::CatalogOptions run_catalog_options(const RunOptions& options) {
+  generators::CatalogOptions catalog_options = options.catalog;
+  if (catalog_options.families.empty()) {
+    catalog_options.families = families_of_patterns(
+        options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+  }
+  return catalog_options;
+}
+
+RunSummary run_jobs(const RunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const OutputFolderLock lock(options.out_dir);  // one run per folder, until this returns
+  const generators::CaseCatalog catalog(run_catalog_options(options));
+  print_skipped_models(catalog);
+  const std::vector<Job> jobs = jobs_of_shard(plan_jobs(options, catalog), options.shard);
+  std::filesystem::create_directories(options.out_dir);
+  JobOptions job_options;
+  job_options.catalog = &catalog;
+  job_options.evaluation = options.evaluation;
+  job_options.method_repetitions = options.method_repetitions;
+  if (options.snapshots) {
+    job_options.snapshot_dir = options.out_dir / "snapshots";
+    std::filesystem::create_directories(job_options.snapshot_dir);
+  }
+  RunSummary summary;
+  const JobFunction run_one = [&](const Job& job) { return run_job(job, job_options); };
+  if (options.in_process) {
+    for (const auto& job : jobs) {
+      summary.records.push_back(run_one(job));
+      if (summary.records.back().status != JobStatus::Ok)
+        ++summary.failures;
+    }
+  } else {
+    RunnerResult result =
+        run_isolated(jobs, run_one, options.out_dir / "records.jsonl", options.runner);
+    summary.records = std::move(result.records);
+    summary.failures = result.failures;
+  }
+  summary.results_json = options.out_dir / "results.json";
+  summary.results_csv = options.out_dir / "results.csv";
+  RunContext context = current_context(options.suite_name);
+  if (options.shard.count > 1)
+    context.shard = to_string(options.shard);
+  write_results_json(summary.results_json, context, summary.records);
+  write_results_csv(summary.results_csv, summary.records);
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace holebench::harness

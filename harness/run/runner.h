@@ -1,0 +1,47 @@
+// The parallel job runner: every job in its own process, so that an exception, a crash or a
+// hang of a method becomes that job's status and the run goes on.
+//
+// Each job runs in a child process (fork) that sends its record back through a pipe. The
+// parent keeps up to `workers` children running, stops a child that passes the timeout
+// (status timeout), and records a child that dies without a record (status crash, with the
+// signal). A child dies with the runner's process (PR_SET_PDEATHSIG), so a run killed
+// outright leaves no job running behind it. Every finished record is appended to
+// records.jsonl with one write on an O_APPEND descriptor and flushed to disk, so an
+// interrupted run loses nothing and `resume` skips the jobs already there. Records depend
+// only on their job: the same records come out whatever the number of workers (up to
+// timings).
+#pragma once
+
+#include "harness/run/job.h"
+
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+namespace holebench::harness {
+
+struct RunnerOptions {
+  int workers = 0;                 ///< processes at once; 0: the number of cores
+  double timeout_seconds = 300.0;  ///< per job; 0: none
+  bool resume = false;             ///< keep the records already in records.jsonl
+  bool progress = true;            ///< progress on stderr: done/total, rate, ETA, failures
+};
+
+struct RunnerResult {
+  std::vector<JobRecord> records;  ///< one per job, in the order of `jobs`
+  std::size_t resumed = 0;         ///< records taken from an earlier run
+  std::size_t failures = 0;        ///< records whose status is not ok
+  double seconds = 0.0;
+};
+
+using JobFunction = std::function<JobRecord(const Job&)>;
+
+/// Runs `jobs` with `run_one` (in child processes), appending to `records_path`.
+RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
+                          const std::filesystem::path& records_path, const RunnerOptions& options);
+
+/// The records in a records.jsonl file; lines that do not parse (a line cut short by an
+/// interruption) are skipped.
+std::vector<JobRecord> read_records_jsonl(const std::filesystem::path& path);
+
+}  // namespace holebench::harness

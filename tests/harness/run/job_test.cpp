@@ -1,0 +1,59 @@
+#include "harness/run/job.h"
+
+#include "harness/results/record_json.h"
+#include "tests/harness/record_lookup.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <string>
+
+namespace holebench::harness {
+namespace {
+
+using test_support::metric;
+using test_support::stage;
+
+TEST(Job, MedianOfOddAndEvenCounts) {
+  EXPECT_EQ(median_of({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_EQ(median_of({4.0, 1.0, 3.0, 2.0}), 2.5);
+  EXPECT_EQ(median_of({7.0}), 7.0);
+  EXPECT_EQ(median_of({}), 0.0);
+}
+
+// Repetitions change the timing only: the method time is the median of the runs, the stage
+// time their sum, and every other metric is the one-run record's.
+TEST(Job, MethodRepetitionsGiveTheMedianTimeAndTheSameResult) {
+  const Job job{"box/corner", "liepa_cgal", 0.0, 0, "no_user"};
+  JobOptions once;
+  const JobRecord single = run_job(job, once);
+  ASSERT_EQ(single.status, JobStatus::Ok) << single.message;
+  ASSERT_EQ(single.method_run_seconds.size(), 1u);
+  EXPECT_EQ(single.method_seconds, single.method_run_seconds[0]);
+
+  JobOptions thrice;
+  thrice.method_repetitions = 3;
+  const JobRecord repeated = run_job(job, thrice);
+  ASSERT_EQ(repeated.status, JobStatus::Ok) << repeated.message;
+  ASSERT_EQ(repeated.method_run_seconds.size(), 3u);
+  EXPECT_EQ(repeated.method_seconds, median_of(repeated.method_run_seconds));
+  EXPECT_EQ(metric(repeated, "time_method_s"), repeated.method_seconds);
+  EXPECT_DOUBLE_EQ(
+      stage(repeated, "method"),
+      std::accumulate(repeated.method_run_seconds.begin(), repeated.method_run_seconds.end(), 0.0));
+  ASSERT_EQ(repeated.metrics.size(), single.metrics.size());
+  for (std::size_t i = 0; i < single.metrics.size(); ++i) {
+    if (single.metrics[i].name == "time_method_s")
+      continue;
+    EXPECT_EQ(repeated.metrics[i].name, single.metrics[i].name);
+    EXPECT_EQ(repeated.metrics[i].value, single.metrics[i].value) << single.metrics[i].name;
+  }
+
+  // The runs survive the record's JSON (results files, records.jsonl, --resume).
+  const JobRecord back = record_from_json(nlohmann::json::parse(record_to_json(repeated).dump()));
+  EXPECT_EQ(back.method_run_seconds, repeated.method_run_seconds);
+  EXPECT_EQ(back.method_seconds, repeated.method_seconds);
+}
+
+}  // namespace
+}  // namespace holebench::harness

@@ -1,0 +1,103 @@
+#include "harness/run/runner.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace holebench::harness {
+namespace {
+
+std::filesystem::path fresh_file(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "holebench_runner_test";
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove(dir / name);
+  return dir / name;
+}
+
+std::vector<Job> jobs_named(const std::vector<std::string>& cases) {
+  std::vector<Job> jobs;
+  for (const auto& c : cases)
+    jobs.push_back({c, "fake", 0.0, 0, "no_user"});
+  return jobs;
+}
+
+// A stand-in job: its behaviour is chosen by the case id, its record depends on the id only.
+JobRecord fake_job(const Job& job) {
+  if (job.case_id == "crash")
+    std::raise(SIGSEGV);
+  if (job.case_id == "hang")
+    std::this_thread::sleep_for(std::chrono::hours(1));
+  if (job.case_id == "throw")
+    throw std::runtime_error("escaped");
+  JobRecord record;
+  record.job = job;
+  record.metrics = {{"length_count", static_cast<double>(job.case_id.size())}};
+  return record;
+}
+
+TEST(Runner, CrashesHangsAndEscapesBecomeStatusesAndTheRunGoesOn) {
+  RunnerOptions options;
+  options.workers = 2;
+  options.timeout_seconds = 1.0;
+  options.progress = false;
+  const auto path = fresh_file("statuses.jsonl");
+  const auto result =
+      run_isolated(jobs_named({"a", "crash", "hang", "throw", "bb"}), fake_job, path, options);
+  ASSERT_EQ(result.records.size(), 5u);
+  EXPECT_EQ(result.records[0].status, JobStatus::Ok);
+  EXPECT_EQ(result.records[1].status, JobStatus::Crash);
+  EXPECT_NE(result.records[1].message.find("Segmentation"), std::string::npos)
+      << result.records[1].message;
+  EXPECT_EQ(result.records[2].status, JobStatus::Timeout);
+  EXPECT_EQ(result.records[3].status, JobStatus::Error);  // the child catches what escapes the job
+  EXPECT_NE(result.records[3].message.find("escaped"), std::string::npos);
+  EXPECT_EQ(result.records[4].status, JobStatus::Ok);
+  EXPECT_EQ(result.records[4].metrics[0].value, 2.0);
+  EXPECT_EQ(result.failures, 3u);
+  EXPECT_EQ(read_records_jsonl(path).size(), 5u);  // every record was appended as it finished
+}
+
+TEST(Runner, SameRecordsWhateverTheNumberOfWorkers) {
+  const auto jobs = jobs_named({"a", "bb", "ccc", "dddd", "eeeee", "ffffff"});
+  RunnerOptions options;
+  options.progress = false;
+  options.workers = 1;
+  const auto one = run_isolated(jobs, fake_job, fresh_file("one.jsonl"), options);
+  options.workers = 3;
+  const auto three = run_isolated(jobs, fake_job, fresh_file("three.jsonl"), options);
+  ASSERT_EQ(one.records.size(), three.records.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    EXPECT_EQ(one.records[i].job.id(), jobs[i].id());
+    EXPECT_EQ(one.records[i].job.id(), three.records[i].job.id());
+    EXPECT_EQ(one.records[i].metrics[0].value, three.records[i].metrics[0].value);
+  }
+}
+
+// An interrupted run: the records file holds two finished jobs and a line cut short. With
+// resume, those two are kept and only the others run.
+TEST(Runner, ResumeRunsOnlyWhatIsMissing) {
+  const auto path = fresh_file("resume.jsonl");
+  const auto jobs = jobs_named({"a", "bb", "ccc", "dddd"});
+  {
+    RunnerOptions first;
+    first.progress = false;
+    run_isolated({jobs[0], jobs[1]}, fake_job, path, first);
+    std::ofstream(path, std::ios::app) << "{\"case_id\": \"ccc\", \"meth";  // cut short
+  }
+  RunnerOptions options;
+  options.progress = false;
+  options.resume = true;
+  const auto result = run_isolated(jobs, fake_job, path, options);
+  EXPECT_EQ(result.resumed, 2u);
+  ASSERT_EQ(result.records.size(), 4u);
+  for (const auto& r : result.records)
+    EXPECT_EQ(r.status, JobStatus::Ok);
+  // The two resumed records are the earlier run's: four lines in the file now (plus the cut one).
+  EXPECT_EQ(read_records_jsonl(path).size(), 4u);
+}
+
+}  // namespace
+}  // namespace holebench::harness
