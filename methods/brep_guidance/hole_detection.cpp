@@ -95,41 +95,43 @@ int region_across(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle h) {
   return mesh.is_boundary(o) ? -1 : faces.face_region[mesh.face_handle(o).idx()];
 }
 
-// h_i: the boundary of f_i (`region`) that ends in t, before `first` (the first hole
-// half-edge of f_i, starting in t), as the unit chord of its last kTransitionEdges half-edges
-// along the same neighbouring face.
-Point transition_into(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle first, int region) {
-  HalfedgeHandle h = previous_on_boundary(mesh, faces, first, region);
+// The unit chord of up to kTransitionEdges consecutive boundary half-edges of `region` along
+// the same neighbouring face, from the transition vertex t outwards: walking back from
+// `hole_edge` (`into` t: the half-edges before it, ending in t) or on from it (out of t).
+Point transition_chord(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle hole_edge,
+                       int region, bool into) {
+  auto step = [&](HalfedgeHandle h) {
+    return into ? previous_on_boundary(mesh, faces, h, region)
+                : next_on_boundary(mesh, faces, h, region);
+  };
+  auto far_end = [&](HalfedgeHandle h) {
+    return mesh.point(into ? mesh.from_vertex_handle(h) : mesh.to_vertex_handle(h));
+  };
+  HalfedgeHandle h = step(hole_edge);
   if (!h.is_valid())
     return Point(0, 0, 0);
-  const Point end = mesh.point(mesh.to_vertex_handle(h));
+  const Point at_t = mesh.point(into ? mesh.to_vertex_handle(h) : mesh.from_vertex_handle(h));
   const int neighbour = region_across(mesh, faces, h);
-  Point start = mesh.point(mesh.from_vertex_handle(h));
+  Point far = far_end(h);
   for (int e = 1; e < kTransitionEdges && neighbour >= 0; ++e) {
-    h = previous_on_boundary(mesh, faces, h, region);
+    h = step(h);
     if (!h.is_valid() || region_across(mesh, faces, h) != neighbour)
       break;
-    start = mesh.point(mesh.from_vertex_handle(h));
+    far = far_end(h);
   }
-  return unit(end - start);
+  return into ? unit(at_t - far) : unit(far - at_t);
+}
+
+// h_i: the boundary of f_i (`region`) that ends in t, before `first` (the first hole
+// half-edge of f_i, starting in t).
+Point transition_into(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle first, int region) {
+  return transition_chord(mesh, faces, first, region, true);
 }
 
 // The boundary of f_{i-1} (`region`) that starts in t, after `last` (its last hole half-edge,
-// ending in t), likewise.
+// ending in t).
 Point transition_out_of(const Mesh& mesh, const BrepFaces& faces, HalfedgeHandle last, int region) {
-  HalfedgeHandle h = next_on_boundary(mesh, faces, last, region);
-  if (!h.is_valid())
-    return Point(0, 0, 0);
-  const Point start = mesh.point(mesh.from_vertex_handle(h));
-  const int neighbour = region_across(mesh, faces, h);
-  Point end = mesh.point(mesh.to_vertex_handle(h));
-  for (int e = 1; e < kTransitionEdges && neighbour >= 0; ++e) {
-    h = next_on_boundary(mesh, faces, h, region);
-    if (!h.is_valid() || region_across(mesh, faces, h) != neighbour)
-      break;
-    end = mesh.point(mesh.to_vertex_handle(h));
-  }
-  return unit(end - start);
+  return transition_chord(mesh, faces, last, region, false);
 }
 
 // The point common to three planes, or nothing when they are (nearly) dependent.
