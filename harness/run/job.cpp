@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/geometry.h"
+#include "core/stopwatch.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/render/snapshot.h"
@@ -60,10 +61,6 @@ void copy_holes(const MethodResult& result, JobRecord& record) {
 }
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 }  // namespace
 

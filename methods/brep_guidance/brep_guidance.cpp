@@ -1,6 +1,7 @@
 #include "methods/brep_guidance/brep_guidance.h"
 
 #include "core/geometry.h"
+#include "core/stopwatch.h"
 #include "methods/brep_guidance/brep_faces.h"
 #include "methods/brep_guidance/exact_closing.h"
 #include "methods/brep_guidance/guidance_arrow.h"
@@ -13,9 +14,6 @@ namespace holebench {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 }  // namespace
 
 MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parameters, User& user,

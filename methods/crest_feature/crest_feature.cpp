@@ -1,5 +1,6 @@
 #include "methods/crest_feature/crest_feature.h"
 
+#include "core/stopwatch.h"
 #include "methods/crest_feature/hole_identification.h"
 #include "methods/crest_feature/hole_partitioning.h"
 
@@ -10,9 +11,6 @@
 namespace holebench {
 namespace {
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 }  // namespace
 
 MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeatureOptions& options) {

@@ -1,5 +1,7 @@
 #include "methods/slice_loft/slice_loft.h"
 
+#include "core/stopwatch.h"
+
 #include <chrono>
 #include <sstream>
 
@@ -28,10 +30,6 @@ using Clock = std::chrono::steady_clock;
 // missing features, each lofted in its region) does not produce the patch and the whole hole
 // is filled as one portion without features, slicing every influencing triangle.
 constexpr const char* kOnePortionWithoutFeatures = "one_portion_without_features";
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 struct PhaseClock {
   double identification = 0, segmentation = 0, features = 0, surface = 0, sewing = 0;
 };
