@@ -64,14 +64,6 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-double median_of(std::vector<double> values) {
-  if (values.empty())
-    return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 JobRecord run_job(const Job& job, const JobOptions& options) {
   JobRecord record;
   record.job = job;

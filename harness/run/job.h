@@ -1,6 +1,7 @@
 // One job: a case x a method x a seed, and the record it produces.
 #pragma once
 
+#include "core/statistics.h"  // median_of: a job's method time over repetitions
 #include "generators/case_catalog.h"
 #include "methods/method.h"
 #include "metrics/evaluation.h"
@@ -75,9 +76,6 @@ struct JobOptions {
   /// median; the first run's result is the one evaluated (the methods are deterministic).
   int method_repetitions = 1;
 };
-
-/// The median of `values` (the mean of the two middle ones for an even count; 0 if empty).
-double median_of(std::vector<double> values);
 
 /// Generates the case, runs the method with no user, evaluates, renders. Never throws:
 /// every failure becomes the record's status and message.

@@ -1,5 +1,7 @@
 #include "harness/outputs/report/summary_table.h"
 
+#include "core/statistics.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,14 +19,6 @@ const std::vector<std::string>& summary_metrics() {
 }
 
 namespace {
-
-double quantile(const std::vector<double>& sorted, double p) {
-  const double position = p * static_cast<double>(sorted.size() - 1);
-  const auto lower = static_cast<std::size_t>(std::floor(position));
-  const std::size_t upper = std::min(lower + 1, sorted.size() - 1);
-  const double t = position - static_cast<double>(lower);
-  return sorted[lower] + t * (sorted[upper] - sorted[lower]);
-}
 
 const double* find_metric(const JobRecord& record, const std::string& name) {
   for (const auto& metric : record.metrics) {

@@ -14,13 +14,6 @@ namespace {
 using test_support::metric;
 using test_support::stage;
 
-TEST(Job, MedianOfOddAndEvenCounts) {
-  EXPECT_EQ(median_of({3.0, 1.0, 2.0}), 2.0);
-  EXPECT_EQ(median_of({4.0, 1.0, 3.0, 2.0}), 2.5);
-  EXPECT_EQ(median_of({7.0}), 7.0);
-  EXPECT_EQ(median_of({}), 0.0);
-}
-
 // Repetitions change the timing only: the method time is the median of the runs, the stage
 // time their sum, and every other metric is the one-run record's.
 TEST(Job, MethodRepetitionsGiveTheMedianTimeAndTheSameResult) {
