@@ -36,6 +36,12 @@ std::vector<Value> natural_second_derivatives(const std::vector<double>& x,
   return m;
 }
 
+// The knot interval [x_i, x_{i+1}] that holds `at` (x_0 < at < x_{n-1}).
+std::size_t knot_interval(const std::vector<double>& x, double at) {
+  return std::min<std::size_t>(x.size() - 2,
+                               std::upper_bound(x.begin(), x.end(), at) - x.begin() - 1);
+}
+
 template <typename Value>
 Value evaluate_spline(const std::vector<double>& x, const std::vector<Value>& y,
                       const std::vector<Value>& m, double at) {
@@ -52,8 +58,7 @@ Value evaluate_spline(const std::vector<double>& x, const std::vector<Value>& y,
     return y[0] + slope(0, true) * (at - x[0]);
   if (at >= x[n - 1])
     return y[n - 1] + slope(n - 2, false) * (at - x[n - 1]);
-  const std::size_t i =
-      std::min<std::size_t>(n - 2, std::upper_bound(x.begin(), x.end(), at) - x.begin() - 1);
+  const std::size_t i = knot_interval(x, at);
   const double h = x[i + 1] - x[i], a = (x[i + 1] - at) / h, b = (at - x[i]) / h;
   return y[i] * a + y[i + 1] * b +
          (m[i] * (a * a * a - a) + m[i + 1] * (b * b * b - b)) * (h * h / 6.0);
@@ -68,11 +73,7 @@ std::pair<Value, Value> spline_derivatives(const std::vector<double>& x,
   if (n == 1)
     return {zero, zero};
   const bool before = at <= x[0], after = at >= x[n - 1];
-  const std::size_t i =
-      before ? 0
-      : after
-          ? n - 2
-          : std::min<std::size_t>(n - 2, std::upper_bound(x.begin(), x.end(), at) - x.begin() - 1);
+  const std::size_t i = before ? 0 : after ? n - 2 : knot_interval(x, at);
   const double h = x[i + 1] - x[i];
   const double clamped = std::clamp(at, x[i], x[i + 1]);
   const double a = (x[i + 1] - clamped) / h, b = (clamped - x[i]) / h;
@@ -190,22 +191,33 @@ LoftedSurface LoftedSurface::loft(const Point& origin, const Point& d,
   return surface;
 }
 
-Point LoftedSurface::evaluate(double u, double s) const {
-  const std::vector<double> w = NaturalCubicSpline::weights(u_, u);
+Point LoftedSurface::across(const std::vector<double>& w, double s) const {
   Point p(0, 0, 0);
   for (std::size_t k = 0; k < along_.size(); ++k)
     p += along_[k](s) * w[k];
   return p;
 }
 
+std::vector<Point> LoftedSurface::across_on_grid(const std::vector<double>& w) const {
+  std::vector<Point> curve(s_.size(), Point(0, 0, 0));
+  for (std::size_t k = 0; k < grid_.size(); ++k) {
+    for (std::size_t j = 0; j < s_.size(); ++j)
+      curve[j] += grid_[k][j] * w[k];
+  }
+  return curve;
+}
+
+Point LoftedSurface::evaluate(double u, double s) const {
+  return across(NaturalCubicSpline::weights(u_, u), s);
+}
+
 Point LoftedSurface::point_with_coordinate(double u, const Point& axis, double value) const {
   const std::vector<double> w = NaturalCubicSpline::weights(u_, u);
   auto coordinate_at = [&](double s, Point* point, double* slope) {
-    Point q(0, 0, 0), first(0, 0, 0);
-    for (std::size_t k = 0; k < along_.size(); ++k) {
-      q += along_[k](s) * w[k];
+    const Point q = across(w, s);
+    Point first(0, 0, 0);
+    for (std::size_t k = 0; k < along_.size(); ++k)
       first += along_[k].derivatives(s).first * w[k];
-    }
     *point = q;
     *slope = OpenMesh::dot(first, axis);
     return OpenMesh::dot(q - origin_, axis);
@@ -250,11 +262,7 @@ std::array<double, 2> LoftedSurface::parameters(const Point& p) const {
   const std::vector<double> w = NaturalCubicSpline::weights(u_, u);
   // The curve S(u, .) at the grid's s values (the spline across sections is linear in the
   // data, so this is exact there); nearest point on that polyline first ...
-  std::vector<Point> curve(s_.size(), Point(0, 0, 0));
-  for (std::size_t k = 0; k < grid_.size(); ++k) {
-    for (std::size_t j = 0; j < s_.size(); ++j)
-      curve[j] += grid_[k][j] * w[k];
-  }
+  const std::vector<Point> curve = across_on_grid(w);
   double best = 1e300, s0 = s_.front();
   for (std::size_t j = 0; j + 1 < curve.size(); ++j) {
     const Point a = curve[j], ab = curve[j + 1] - a;
@@ -268,12 +276,7 @@ std::array<double, 2> LoftedSurface::parameters(const Point& p) const {
   }
   // ... then refined on the spline itself by golden-section search within one grid step.
   const double step = s_[1] - s_[0];
-  auto distance2 = [&](double s) {
-    Point q(0, 0, 0);
-    for (std::size_t k = 0; k < along_.size(); ++k)
-      q += along_[k](s) * w[k];
-    return (q - p).sqrnorm();
-  };
+  auto distance2 = [&](double s) { return (across(w, s) - p).sqrnorm(); };
   const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
   double a = s0 - step, b = s0 + step;
   double c = b - ratio * (b - a), e = a + ratio * (b - a);
@@ -297,9 +300,9 @@ std::array<double, 2> LoftedSurface::parameters(const Point& p) const {
   // where the surface is affine, so collinear boundary points stay collinear in (u, s)).
   double at = 0.5 * (a + b);
   for (int i = 0; i < 4; ++i) {
-    Point q(0, 0, 0), first(0, 0, 0), second(0, 0, 0);
+    const Point q = across(w, at);
+    Point first(0, 0, 0), second(0, 0, 0);
     for (std::size_t k = 0; k < along_.size(); ++k) {
-      q += along_[k](at) * w[k];
       const auto [d1, d2] = along_[k].derivatives(at);
       first += d1 * w[k];
       second += d2 * w[k];

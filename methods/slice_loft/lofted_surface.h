@@ -78,6 +78,10 @@ class LoftedSurface {
   std::string error_;
 
   double reference_arc_length(const std::vector<Point>& polyline, double u) const;
+  /// sum_k w_k C_k(s): the curve S(u, .) at s, w the spline weights across sections at u.
+  Point across(const std::vector<double>& w, double s) const;
+  /// The same at every grid value s_j (exact there: C_k(s_j) is a grid point).
+  std::vector<Point> across_on_grid(const std::vector<double>& w) const;
 };
 
 }  // namespace holebench::slice_loft

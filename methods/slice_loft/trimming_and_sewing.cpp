@@ -45,11 +45,6 @@ double signed_area(const std::vector<Vec2>& loop) {
 
 }  // namespace
 
-const char* to_string(TrimmingDomain domain) {
-  return domain == TrimmingDomain::PortionPlane ? "the portion's plane (u, w)"
-                                                : "the surface's (u, s)";
-}
-
 namespace {
 
 PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,

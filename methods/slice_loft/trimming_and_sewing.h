@@ -26,7 +26,6 @@ struct TessellationOptions {
 /// length along the sections, which stays one to one where the boundary folds over in the
 /// plane (a hole around an edge or a curved face).
 enum class TrimmingDomain { PortionPlane, Surface };
-const char* to_string(TrimmingDomain domain);
 
 /// Facets of one trimmed patch. Triangle indices: the portion's boundary nodes first, then
 /// the islands' nodes in order, then `interior`. Oriented like the mesh (they use the
