@@ -25,7 +25,7 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     result.message = "crest lines skipped (degenerate principal directions): plain filling";
 
   start = Clock::now();
-  const std::vector<Hole> holes = identify_holes(holed);
+  const std::vector<Hole> holes = identify_holes(holed, options.identification);
   result.phases.push_back({"hole identification (3.3)", seconds_since(start)});
 
   double feature_seconds = 0.0, user_seconds = 0.0, interpolation_seconds = 0.0,
@@ -73,6 +73,11 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
       // Not in the paper: the hole is closed without its feature lines.
       start = Clock::now();
       report.new_faces = fill_hole_without_features(result.repaired, hole.loop.halfedges.front());
+      for (const auto& island : hole.islands) {  // each island's loop as a hole of its own
+        const auto h = result.repaired.find_halfedge(island[0], island[1]);
+        if (h.is_valid() && result.repaired.is_boundary(h))
+          report.new_faces += fill_hole_without_features(result.repaired, h);
+      }
       filling_seconds += seconds_since(start);
       report.closed = report.new_faces > 0;
       report.fallback = "cgal_triangulate_hole";
@@ -87,6 +92,15 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
         detected.points.size(), features.points.size(), features.pairs.size(),
         features.corner ? "yes" : "no", user.interventions() - before, lines.lines.size(),
         partition.sub_holes.size(), fallbacks);
+    int planarity_chords = 0;
+    for (const auto& s : filling.sub_holes)
+      planarity_chords += s.chords;
+    if (planarity_chords > 0)
+      report.note += fmt::format("; sub-holes cut for equation 6 by {} chord(s)", planarity_chords);
+    if (filling.split_chords > 0)
+      report.note += fmt::format("; chords split {}", filling.split_chords);
+    if (!hole.islands.empty())
+      report.note += fmt::format("; islands {}", hole.islands.size());
     for (const auto& d : partition.dropped)
       report.note += "; dropped: " + d;
     report.note += fallback;

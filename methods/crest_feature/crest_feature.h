@@ -12,12 +12,14 @@
 #include "methods/crest_feature/feature_line_interpolation.h"
 #include "methods/crest_feature/feature_points.h"
 #include "methods/crest_feature/hole_filling.h"
+#include "methods/crest_feature/hole_identification.h"
 #include "methods/method.h"
 
 namespace holebench {
 
 struct CrestFeatureOptions {
   crest_feature::CrestLineOptions crest_lines;
+  crest_feature::HoleIdentificationOptions identification;  ///< islands attached by default
   crest_feature::FeaturePointOptions feature_points;
   crest_feature::InterpolationOptions interpolation;
   crest_feature::HoleFillingOptions filling;  ///< refinement and fairing off by default

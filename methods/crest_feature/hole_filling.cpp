@@ -3,6 +3,7 @@
 
 #include "core/geometry.h"
 #include "core/plane_fit.h"
+#include "core/polygon.h"
 #include "methods/common/planar_polygon_triangulation.h"
 
 // CGAL's graph traits for OpenMesh must come before any CGAL algorithm header.
@@ -34,17 +35,12 @@ Point node_point(const Mesh& mesh, const HolePartition& partition, Node node) {
                    : partition.new_points[new_point_index(node)];
 }
 
-// Newell's normal of a closed polygon.
-Point newell_normal(const std::vector<Point>& points) {
-  Point n(0, 0, 0);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point& p = points[i];
-    const Point& q = points[(i + 1) % points.size()];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
-  return n;
+std::vector<Point> node_points(const Mesh& mesh, const HolePartition& partition,
+                               const std::vector<Node>& nodes) {
+  std::vector<Point> points;
+  for (Node node : nodes)
+    points.push_back(node_point(mesh, partition, node));
+  return points;
 }
 
 }  // namespace
@@ -73,48 +69,192 @@ std::string sub_hole_fallback(const std::vector<SubHoleFilling>& sub_holes) {
   return "";
 }
 
+std::vector<int> place_islands(const Mesh& mesh, const HolePartition& partition) {
+  std::vector<int> placed(partition.islands.size(), -1);
+  for (std::size_t k = 0; k < partition.islands.size(); ++k) {
+    const std::vector<Point> island = node_points(mesh, partition, partition.islands[k]);
+    for (std::size_t i = 0; i < partition.sub_holes.size() && placed[k] < 0; ++i) {
+      const std::vector<Point> boundary = node_points(mesh, partition, partition.sub_holes[i]);
+      Point normal = projection_normal(mesh, partition.sub_holes[i]);
+      if (normal.norm() < 1e-12)
+        normal = newell_normal(boundary);
+      const bool inside = std::all_of(island.begin(), island.end(), [&](const Point& p) {
+        return inside_projected_polygon(boundary, normal, p);
+      });
+      if (inside)
+        placed[k] = static_cast<int>(i);
+    }
+  }
+  return placed;
+}
+
+std::size_t split_chords_the_mesh_has(const Mesh& mesh, std::vector<std::array<Node, 3>>& triangles,
+                                      std::vector<Point>& new_points) {
+  auto point = [&](Node node) {
+    return node >= 0 ? mesh.point(mesh.vertex_handle(node)) : new_points[new_point_index(node)];
+  };
+  // The halfedge a -> b of a triangle can be stitched only where the mesh has no such edge
+  // or has it as a boundary halfedge (an edge of the hole's own loop).
+  auto taken = [&](Node a, Node b) {
+    if (a < 0 || b < 0)
+      return false;
+    const auto h = mesh.find_halfedge(mesh.vertex_handle(a), mesh.vertex_handle(b));
+    return h.is_valid() && !mesh.is_boundary(h);
+  };
+  std::size_t splits = 0;
+  // Each split removes one taken chord and adds none (the new edges end at the new point).
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const Node a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      if (!taken(a, b))
+        continue;
+      const Node m = new_point_node(static_cast<int>(new_points.size()));
+      new_points.push_back((point(a) + point(b)) * 0.5);
+      ++splits;
+      // Every triangle on the chord {a, b} (this one and its neighbour across it) becomes two.
+      const std::size_t count = triangles.size();
+      for (std::size_t u = 0; u < count; ++u) {
+        for (int j = 0; j < 3; ++j) {
+          const Node p = triangles[u][j], q = triangles[u][(j + 1) % 3],
+                     r = triangles[u][(j + 2) % 3];
+          if ((p == a && q == b) || (p == b && q == a)) {
+            triangles[u] = {p, m, r};
+            triangles.push_back({m, q, r});
+            break;
+          }
+        }
+      }
+      k = -1;  // the triangle changed: look at its edges again
+    }
+  }
+  return splits;
+}
+
 HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
                             const HoleFillingOptions& options) {
   HoleFillingResult result;
-  std::vector<std::array<Node, 3>> triangles;
-  for (const auto& sub_hole : partition.sub_holes) {
-    SubHoleFilling filling;
+  const std::vector<int> placed = place_islands(mesh, partition);
+  if (std::find(placed.begin(), placed.end(), -1) != placed.end()) {
+    result.error = "an island lies inside no sub-hole";
+    return result;
+  }
+  std::vector<Point> new_points = partition.new_points;  // grows by the chords' points
+  auto point = [&](Node node) {
+    return node >= 0 ? mesh.point(mesh.vertex_handle(node)) : new_points[new_point_index(node)];
+  };
+  auto points_of = [&](const std::vector<Node>& nodes) {
     std::vector<Point> points;
-    for (Node node : sub_hole)
-      points.push_back(node_point(mesh, partition, node));
-    Point centroid(0, 0, 0);
+    for (Node node : nodes)
+      points.push_back(point(node));
+    return points;
+  };
+  // The CDT of a loop (and inner loops) projected on the plane with `normal` through the
+  // loop's centroid; indices count the loop's nodes, then the inner loops'.
+  auto project = [&](const std::vector<Node>& loop, const std::vector<std::vector<Node>>& inner,
+                     const Point& normal) {
+    PolygonTriangulation triangulation;
+    if (normal.norm() < 1e-12) {
+      triangulation.error = "no projection direction";
+      return triangulation;
+    }
+    const std::vector<Point> points = points_of(loop);
+    std::vector<std::vector<Point>> inner_points;
+    for (const auto& island : inner)
+      inner_points.push_back(points_of(island));
+    Plane plane;
     for (const Point& p : points)
-      centroid += p;
-    centroid /= static_cast<double>(points.size());
-    // Equation 6 first; where its projection intersects itself, Newell's normal (the
-    // maximum area vector of the polygon itself), then the least-squares plane.
-    struct Candidate {
-      std::string name;
-      std::string fallback;
-      Point normal;
-    };
-    std::vector<Candidate> normals{{"equation 6", "", projection_normal(mesh, sub_hole)},
-                                   {"newell", kNewellProjection, newell_normal(points)}};
+      plane.point += p;
+    plane.point /= static_cast<double>(points.size());
+    plane.normal = normal / normal.norm();
+    return triangulate_planar_polygon(points, plane, inner_points);
+  };
+  // Equation 6: the normals of the triangles along the loop and along the inner loops.
+  auto equation_6 = [&](const std::vector<Node>& loop,
+                        const std::vector<std::vector<Node>>& inner) {
+    Point normal = projection_normal(mesh, loop);
+    for (const auto& island : inner)
+      normal += projection_normal(mesh, island);
+    return project(loop, inner, normal);
+  };
+  std::vector<std::array<Node, 3>> triangles;
+  // Orient a triangulation like the mesh (the triangle on the loop's first edge (0, 1) must
+  // run 0 -> 1) and keep its triangles as nodes.
+  auto keep = [&](const std::vector<Node>& nodes, const PolygonTriangulation& triangulation) {
+    bool flip = false;
+    for (const auto& t : triangulation.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        if (t[k] == 0 && t[(k + 1) % 3] == 1)
+          flip = false;
+        if (t[k] == 1 && t[(k + 1) % 3] == 0)
+          flip = true;
+      }
+    }
+    for (const auto& t : triangulation.triangles) {
+      std::array<Node, 3> tri{nodes[t[0]], nodes[t[1]], nodes[t[2]]};
+      if (flip)
+        std::swap(tri[1], tri[2]);
+      triangles.push_back(tri);
+    }
+  };
+
+  for (std::size_t i = 0; i < partition.sub_holes.size(); ++i) {
+    SubHoleFilling filling;
+    const std::vector<Node>& loop = partition.sub_holes[i];
+    std::vector<std::vector<Node>> islands;
+    for (std::size_t k = 0; k < placed.size(); ++k) {
+      if (placed[k] == static_cast<int>(i))
+        islands.push_back(partition.islands[k]);
+    }
+    // The triangulation's indices count the loop's nodes, then the islands'.
+    std::vector<Node> nodes = loop;
+    for (const auto& island : islands)
+      nodes.insert(nodes.end(), island.begin(), island.end());
+
+    // Equation 6 (the paper's step).
+    PolygonTriangulation triangulation = equation_6(loop, islands);
+    if (triangulation.ok) {
+      filling.ok = true;
+      filling.plane = "equation 6";
+      keep(nodes, triangulation);
+      result.sub_holes.push_back(filling);
+      continue;
+    }
+    filling.error = "equation 6: " + triangulation.error;
+
+    // Where its projection intersects itself: the sub-hole cut into more planar pieces, each
+    // projected by equation 6 (planarity_split.h).
+    if (islands.empty()) {
+      const PlanaritySplit split = split_for_equation_6(
+          loop, new_points, point,
+          [&](const std::vector<Node>& piece) { return equation_6(piece, {}); },
+          options.planarity_split);
+      if (split.ok) {
+        filling.ok = true;
+        filling.plane = "equation 6";
+        filling.chords = split.chords;
+        for (const auto& piece : split.pieces)
+          keep(piece.nodes, piece.triangulation);
+        result.sub_holes.push_back(filling);
+        continue;
+      }
+    }
+
+    // Not in the paper: Newell's normal (the maximum area vector of the polygon itself), then
+    // the least-squares plane, then a 3D triangulation; each named as the fallback.
+    const std::vector<Point> points = points_of(loop);
+    std::vector<std::pair<std::string, Point>> normals{{"newell", newell_normal(points)}};
     const PlaneFit fit = fit_plane(points);
     if (fit.valid)
-      normals.push_back({"least squares", kLeastSquaresProjection, fit.plane.normal});
-    PolygonTriangulation triangulation;
-    for (const auto& [name, fallback, normal] : normals) {
-      if (normal.norm() < 1e-12)
-        continue;
-      Plane plane;
-      plane.point = centroid;
-      plane.normal = normal / normal.norm();
-      triangulation = triangulate_planar_polygon(points, plane);
+      normals.push_back({"least squares", fit.plane.normal});
+    for (const auto& [name, normal] : normals) {
+      triangulation = project(loop, islands, normal);
       if (triangulation.ok) {
         filling.plane = name;
-        filling.fallback = fallback;
+        filling.fallback = name == "newell" ? kNewellProjection : kLeastSquaresProjection;
         break;
       }
-      if (filling.error.empty())
-        filling.error = name + ": " + triangulation.error;
     }
-    if (!triangulation.ok && options.polyline_fallback) {
+    if (!triangulation.ok && options.polyline_fallback && islands.empty()) {
       // Every projection intersects itself: a minimum-weight triangulation of the 3D
       // boundary polygon (Barequet-Sharir / Liepa, CGAL), recorded as a departure.
       using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -136,25 +276,8 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
       }
     }
     filling.ok = triangulation.ok;
-    if (triangulation.ok) {
-      // Orient the patch like the mesh: the triangle on the sub-hole's first edge (0, 1)
-      // must run 0 -> 1.
-      bool flip = false;
-      for (const auto& t : triangulation.triangles) {
-        for (int k = 0; k < 3; ++k) {
-          if (t[k] == 0 && t[(k + 1) % 3] == 1)
-            flip = false;
-          if (t[k] == 1 && t[(k + 1) % 3] == 0)
-            flip = true;
-        }
-      }
-      for (const auto& t : triangulation.triangles) {
-        std::array<Node, 3> tri{sub_hole[t[0]], sub_hole[t[1]], sub_hole[t[2]]};
-        if (flip)
-          std::swap(tri[1], tri[2]);
-        triangles.push_back(tri);
-      }
-    }
+    if (triangulation.ok)
+      keep(nodes, triangulation);
     result.sub_holes.push_back(filling);
   }
   const bool all = std::all_of(result.sub_holes.begin(), result.sub_holes.end(),
@@ -164,6 +287,9 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
     return result;
   }
 
+  if (options.split_taken_chords)
+    result.split_chords = split_chords_the_mesh_has(mesh, triangles, new_points);
+
   // Stitch: new vertices for the new points the sub-holes use, then the faces.
   Mesh patched = mesh;
   std::map<Node, VertexHandle> handles;
@@ -172,8 +298,7 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
       return patched.vertex_handle(node);
     auto it = handles.find(node);
     if (it == handles.end()) {
-      it = handles.emplace(node, patched.add_vertex(partition.new_points[new_point_index(node)]))
-               .first;
+      it = handles.emplace(node, patched.add_vertex(new_points[new_point_index(node)])).first;
       ++result.new_vertices;
     }
     return it->second;

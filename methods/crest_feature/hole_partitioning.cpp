@@ -39,6 +39,12 @@ HolePartition partition_hole(const Hole& hole, const FeatureLines& lines) {
   for (auto v : hole.vertices)
     boundary.push_back(v.idx());
   result.sub_holes.push_back(boundary);
+  for (const auto& island : hole.islands) {
+    std::vector<Node> nodes;
+    for (auto v : island)
+      nodes.push_back(v.idx());
+    result.islands.push_back(std::move(nodes));
+  }
 
   auto add_points = [&](const std::vector<Point>& points) {
     std::vector<Node> nodes;

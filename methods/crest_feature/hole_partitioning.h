@@ -27,6 +27,9 @@ struct HolePartition {
   std::vector<std::vector<Node>> sub_holes;
   std::vector<Node> feature_nodes;   ///< the nodes on feature lines (interior and corner)
   std::vector<std::string> dropped;  ///< feature lines left out, and why
+  /// The hole's island loops (not in the paper), as nodes in loop order; filling places each
+  /// in the sub-hole around it.
+  std::vector<std::vector<Node>> islands;
 };
 
 /// Splits the hole's loop by each feature line in turn (a pair's line is a chord between

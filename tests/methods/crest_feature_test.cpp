@@ -205,13 +205,13 @@ struct MethodRun {
   Evaluation evaluation;
 };
 
-MethodRun run_method(const std::string& id, bool oracle) {
+MethodRun run_method(const std::string& id, bool oracle, const CrestFeatureOptions& options = {}) {
   MethodRun r;
   r.c = generators::make_case(id);
   NoUser no_user;
   harness::OracleUser oracle_user(r.c);
   User& user = oracle ? static_cast<User&>(oracle_user) : static_cast<User&>(no_user);
-  r.result = CrestFeatureMethod().run(r.c.input, {}, user);
+  r.result = CrestFeatureMethod(options).run(r.c.input, {}, user);
   r.interventions = user.interventions();
   r.evaluation = evaluate(r.c, r.result);
   return r;
@@ -321,21 +321,33 @@ TEST(CrestFeature, OutputIsClosedAndManifold) {
 // HoleReport::fallback: empty where the paper's steps fill the hole (the one-crease hole:
 // every sub-hole projects by equation 6, as the test above checks); a sub-hole projected
 // some other way names that stand-in; a patch that cannot be stitched is replaced by CGAL's
-// triangulate_hole. The brep cases are those of the nightly baseline whose notes say so.
+// triangulate_hole. The brep cases need those stand-ins once the project's own additions
+// (cutting sub-holes for equation 6, splitting chords the mesh has) are off; with them on,
+// equation 6 fills both.
 TEST(CrestFeature, FallbackNamesWhatStoodInForThePaper) {
   const MethodRun crease = run_method("crease/fandisk/1", false);
   ASSERT_EQ(crease.result.holes.size(), 1u);
   EXPECT_TRUE(crease.result.holes[0].closed);
   EXPECT_EQ(crease.result.holes[0].fallback, "") << crease.result.holes[0].note;
 
-  const MethodRun dependent = run_method("brep/k3/linearly-dependent/small", false);
+  for (const std::string id : {"brep/k3/linearly-dependent/small", "brep/k1/outer/outer/small"}) {
+    const MethodRun own = run_method(id, false);
+    ASSERT_EQ(own.result.holes.size(), 1u);
+    EXPECT_TRUE(own.result.holes[0].closed) << id;
+    EXPECT_EQ(own.result.holes[0].fallback, "") << id << ": " << own.result.holes[0].note;
+  }
+
+  CrestFeatureOptions paper_only;
+  paper_only.filling.planarity_split.enabled = false;
+  paper_only.filling.split_taken_chords = false;
+  const MethodRun dependent = run_method("brep/k3/linearly-dependent/small", false, paper_only);
   ASSERT_EQ(dependent.result.holes.size(), 1u);
   const HoleReport& projected = dependent.result.holes[0];
   EXPECT_TRUE(projected.closed);
   EXPECT_NE(projected.note.find("projection fallbacks 1"), std::string::npos) << projected.note;
   EXPECT_EQ(projected.fallback, "sub_hole_newell_projection") << projected.note;
 
-  const MethodRun outer = run_method("brep/k1/outer/outer/small", false);
+  const MethodRun outer = run_method("brep/k1/outer/outer/small", false, paper_only);
   ASSERT_EQ(outer.result.holes.size(), 1u);
   EXPECT_NE(outer.result.holes[0].note.find("CGAL triangulate_hole"), std::string::npos)
       << outer.result.holes[0].note;
