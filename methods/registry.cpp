@@ -14,7 +14,7 @@ std::vector<std::unique_ptr<Method>> make_all_methods() {
   methods.push_back(std::make_unique<LiepaCgalMethod>());
   methods.push_back(std::make_unique<BrepGuidanceMethod>());
   methods.push_back(std::make_unique<SliceLoftMethod>());
-  methods.push_back(std::make_unique<SliceDirectMethod>());
+  methods.push_back(std::make_unique<SliceLoftMethod>(SliceLoftMethod::direct()));
   methods.push_back(std::make_unique<CrestFeatureMethod>());
   return methods;
 }

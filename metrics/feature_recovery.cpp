@@ -1,5 +1,6 @@
 #include "metrics/feature_recovery.h"
 
+#include "core/distances.h"
 #include "core/geometry.h"
 #include "metrics/embree/triangle_scene.h"
 
@@ -11,14 +12,6 @@ namespace holebench {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-double point_segment_distance(const Point& p, const Point& a, const Point& b) {
-  const Point ab = b - a;
-  const double length2 = ab.sqrnorm();
-  double t = length2 > 0.0 ? OpenMesh::dot(p - a, ab) / length2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return (a + ab * t - p).norm();
-}
 
 std::vector<Point> sample_polyline(const std::vector<Point>& polyline, double spacing) {
   std::vector<Point> samples;

@@ -1,5 +1,6 @@
 #include "metrics/hausdorff_distance.h"
 
+#include "core/distances.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
 
@@ -109,7 +110,7 @@ class DirectedSearch {
     const auto& t = scene_.triangle_of_face(face);
     double bound = 0.0;
     for (const Point& corner : corners) {
-      const Point q = embree::closest_point_on_triangle(corner, t[0], t[1], t[2]);
+      const Point q = closest_point_on_triangle(corner, t[0], t[1], t[2]);
       bound = std::max(bound, (q - corner).norm());
     }
     return bound;

@@ -1,5 +1,6 @@
 #include "metrics/hole_matching.h"
 
+#include "core/distances.h"
 #include "core/boundary_loops.h"
 #include "metrics/embree/triangle_scene.h"
 
@@ -14,7 +15,7 @@ double distance_to_removed_faces(const Case& c, const HoleTruth& hole, const Poi
     int k = 0;
     for (auto v : c.complete.fv_range(c.complete.face_handle(index)))
       t[k++] = c.complete.point(v);
-    const Point q = embree::closest_point_on_triangle(p, t[0], t[1], t[2]);
+    const Point q = closest_point_on_triangle(p, t[0], t[1], t[2]);
     best = std::min(best, (q - p).norm());
   }
   return best;

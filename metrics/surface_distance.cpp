@@ -1,5 +1,6 @@
 #include "metrics/surface_distance.h"
 
+#include "core/distances.h"
 #include "core/plane_fit.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
@@ -20,38 +21,6 @@ namespace {
 
 double triangle_area(const std::array<Point, 3>& c) {
   return 0.5 * OpenMesh::cross(c[1] - c[0], c[2] - c[0]).norm();
-}
-
-double segment_segment_distance(const Point& p1, const Point& q1, const Point& p2,
-                                const Point& q2) {
-  // Ericson, Real-Time Collision Detection, 5.1.9.
-  using OpenMesh::dot;
-  const Point d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
-  double s = 0.0, t = 0.0;
-  if (a <= 0.0 && e <= 0.0)
-    return r.norm();
-  if (a <= 0.0) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = dot(d1, r);
-    if (e <= 0.0) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = dot(d1, d2);
-      const double denominator = a * e - b * b;
-      s = denominator > 0.0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0.0) {
-        t = 0.0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1.0) {
-        t = 1.0;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return ((p1 + d1 * s) - (p2 + d2 * t)).norm();
 }
 
 // Whether segment [p, q] meets triangle t (Moller-Trumbore with t in [0, 1]).
@@ -85,10 +54,8 @@ double triangle_triangle_distance(const std::array<Point, 3>& a, const std::arra
   }
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
-    best =
-        std::min(best, (embree::closest_point_on_triangle(a[i], b[0], b[1], b[2]) - a[i]).norm());
-    best =
-        std::min(best, (embree::closest_point_on_triangle(b[i], a[0], a[1], a[2]) - b[i]).norm());
+    best = std::min(best, (closest_point_on_triangle(a[i], b[0], b[1], b[2]) - a[i]).norm());
+    best = std::min(best, (closest_point_on_triangle(b[i], a[0], a[1], a[2]) - b[i]).norm());
     for (int j = 0; j < 3; ++j)
       best = std::min(best, segment_segment_distance(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
   }
@@ -379,7 +346,7 @@ class MeanSearch {
     const auto& t = scene_.triangle_of_face(face);
     std::array<double, 3> f;
     for (int i = 0; i < 3; ++i)
-      f[i] = (embree::closest_point_on_triangle(c[i], t[0], t[1], t[2]) - c[i]).norm();
+      f[i] = (closest_point_on_triangle(c[i], t[0], t[1], t[2]) - c[i]).norm();
     return f;
   }
 
@@ -544,7 +511,7 @@ class MeanSearch {
       Plane plane;
       if (plane_of(t, plane))
         offer(plane.signed_distance(g) < 0.0 ? -plane.normal : plane.normal);
-      const Point towards = g - embree::closest_point_on_triangle(g, t[0], t[1], t[2]);
+      const Point towards = g - closest_point_on_triangle(g, t[0], t[1], t[2]);
       if (towards.norm() > 0.0)
         offer(towards / towards.norm());
       if (!std::isfinite(best[0])) {

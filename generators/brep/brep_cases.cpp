@@ -1,6 +1,7 @@
 #include "generators/brep/brep_cases.h"
 
 #include "core/boundary_loops.h"
+#include "core/distances.h"
 #include "generators/brep/brep_hole_loops.h"
 #include "generators/brep/brep_models.h"
 #include "generators/brep/polyhedron.h"
@@ -149,12 +150,6 @@ std::vector<Point> loop_points(const Mesh& mesh, const BoundaryLoop& loop) {
   for (auto v : loop_vertices(mesh, loop))
     points.push_back(mesh.point(v));
   return points;
-}
-
-double distance_to_line(const Point& p, const Point& a, const Point& b) {
-  const Point d = (b - a) / (b - a).norm();
-  const Point w = p - a;
-  return (w - d * OpenMesh::dot(w, d)).norm();
 }
 
 // The complete mesh's sharp edges (between two regions) whose faces are both removed,

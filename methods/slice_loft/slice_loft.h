@@ -33,30 +33,26 @@ struct SliceLoftOptions {
 /// for a geometric failure.
 MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options = {});
 
+/// The slice paper's method (`slice_loft`), or with `tessellation.direct` its comparison in
+/// Table 2's right column, "direct tessellation of the discrete points generated from the
+/// slice sections" (`slice_direct`).
 class SliceLoftMethod final : public Method {
  public:
   explicit SliceLoftMethod(SliceLoftOptions options = {}) : options_(options) {}
-  std::string id() const override { return "slice_loft"; }
-  std::string description() const override {
-    return "slice paper: segmented boundary, missing edges and corner traced with curvature "
-           "continuity, slice sections lofted, trimmed and faceted";
+  /// The comparison method, `slice_direct`.
+  static SliceLoftMethod direct() {
+    SliceLoftOptions options;
+    options.tessellation.direct = true;
+    return SliceLoftMethod(options);
   }
-  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
-    return run_slice_loft(holed, options_);
+  std::string id() const override {
+    return options_.tessellation.direct ? "slice_direct" : "slice_loft";
   }
-
- private:
-  SliceLoftOptions options_;
-};
-
-/// The slice paper's comparison (Table 2, right column): "direct tessellation of the discrete
-/// points generated from the slice sections".
-class SliceDirectMethod final : public Method {
- public:
-  SliceDirectMethod() { options_.tessellation.direct = true; }
-  std::string id() const override { return "slice_direct"; }
   std::string description() const override {
-    return "slice paper's comparison: direct tessellation of the slice section points";
+    return options_.tessellation.direct
+               ? "slice paper's comparison: direct tessellation of the slice section points"
+               : "slice paper: segmented boundary, missing edges and corner traced with "
+                 "curvature continuity, slice sections lofted, trimmed and faceted";
   }
   MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
     return run_slice_loft(holed, options_);

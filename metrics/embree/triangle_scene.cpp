@@ -1,5 +1,7 @@
 #include "metrics/embree/triangle_scene.h"
 
+#include "core/distances.h"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -12,39 +14,6 @@
 #include <unistd.h>
 
 namespace holebench::embree {
-
-Point closest_point_on_triangle(const Point& p, const Point& a, const Point& b, const Point& c) {
-  using OpenMesh::dot;
-  const Point ab = b - a;
-  const Point ac = c - a;
-  const Point ap = p - a;
-  const double d1 = dot(ab, ap);
-  const double d2 = dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0)
-    return a;
-  const Point bp = p - b;
-  const double d3 = dot(ab, bp);
-  const double d4 = dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-    return a + ab * (d1 / (d1 - d3));
-  const Point cp = p - c;
-  const double d5 = dot(ab, cp);
-  const double d6 = dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-    return a + ac * (d2 / (d2 - d6));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-  }
-  const double denominator = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denominator) + ac * (vc * denominator);
-}
 
 namespace {
 

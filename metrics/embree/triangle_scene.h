@@ -83,8 +83,4 @@ class TriangleScene {
   std::vector<int> primitive_of_face_;
 };
 
-/// The closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision
-/// Detection, 5.1.5), in double precision.
-Point closest_point_on_triangle(const Point& p, const Point& a, const Point& b, const Point& c);
-
 }  // namespace holebench::embree

@@ -199,7 +199,7 @@ TEST(SliceLoft, OutputIsClosedAndManifold) {
     const Case c = generators::make_case(id);
     NoUser user;
     for (const MethodResult& result :
-         {run_loft(c), SliceDirectMethod().run(c.input, MethodParameters{}, user)}) {
+         {run_loft(c), SliceLoftMethod::direct().run(c.input, MethodParameters{}, user)}) {
       EXPECT_EQ(result.status, MethodStatus::Ok) << notes(result);
       EXPECT_TRUE(find_boundary_loops(result.repaired).empty()) << notes(result);
       for (auto v : result.repaired.vertices())

@@ -2,6 +2,7 @@
 // integrals; expected values are computed by hand (integrals over unit grids).
 #include "metrics/surface_distance.h"
 
+#include "core/distances.h"
 #include "core/geometry.h"
 #include "generators/box_solid.h"
 #include "generators/case_catalog.h"
@@ -97,7 +98,7 @@ TEST(MeanDistance, CurvedDistanceFieldMatchesAnIndependentIntegral) {
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       const Point x(3.0 * (i + 0.5) / n, 3.0 * (j + 0.5) / n, 0.0);
-      const double d = (embree::closest_point_on_triangle(x, t[0], t[1], t[2]) - x).norm();
+      const double d = (closest_point_on_triangle(x, t[0], t[1], t[2]) - x).norm();
       sum += d;
       sum2 += d * d;
     }

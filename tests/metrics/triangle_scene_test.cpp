@@ -9,17 +9,6 @@
 namespace holebench::embree {
 namespace {
 
-TEST(ClosestPointOnTriangle, RegionsOfTheTriangle) {
-  const Point a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  auto expect_near = [](const Point& p, const Point& q) { EXPECT_LT((p - q).norm(), 1e-15); };
-  expect_near(closest_point_on_triangle(Point(0.2, 0.2, 5), a, b, c), Point(0.2, 0.2, 0));  // face
-  expect_near(closest_point_on_triangle(Point(-1, -1, 0), a, b, c), a);                  // vertex
-  expect_near(closest_point_on_triangle(Point(0.5, -2, 1), a, b, c), Point(0.5, 0, 0));  // edge
-  const Point p = closest_point_on_triangle(Point(1, 1, 0), a, b, c);  // hypotenuse
-  EXPECT_NEAR(p[0], 0.5, 1e-15);
-  EXPECT_NEAR(p[1], 0.5, 1e-15);
-}
-
 TEST(TriangleScene, ClosestPointOnABox) {
   const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
   const TriangleScene scene(box);
