@@ -78,6 +78,9 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one)
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent)
       std::_Exit(1);
+    // Its own process group, which the processes it starts (an external method's program
+    // and that program's children) join: a timeout stops them all.
+    ::setpgid(0, 0);
     ::close(fds[0]);
     // The child: run the job, send its record, leave without running the parent's atexit
     // handlers or destructors.
@@ -98,6 +101,7 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one)
     ::close(fds[1]);
     std::_Exit(0);
   }
+  ::setpgid(pid, pid);  // also here: the group exists before any kill (either call may be first)
   ::close(fds[1]);
   Child child;
   child.pid = pid;
@@ -241,7 +245,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       }
       const double elapsed = std::chrono::duration<double>(Clock::now() - child.started).count();
       if (options.timeout_seconds > 0 && elapsed > options.timeout_seconds && !child.timed_out) {
-        ::kill(child.pid, SIGKILL);
+        ::kill(-child.pid, SIGKILL);  // the job's process group
         child.timed_out = true;
       }
       int status = 0;
