@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
                   "Case id or pattern, repeatable (default: the default suite's)");
   run->add_option("--method", run_options.method_ids,
                   "Method id, repeatable (default: every built-in method): a built-in, a "
-                  "predefined external method or an --external name");
+                  "predefined external method (meshlab_close_holes) or an --external name");
   std::vector<std::string> external_texts;
   run->add_option("--external", external_texts,
                   "A program as a method, repeatable: 'name=NAME;command=COMMAND', COMMAND "

@@ -18,7 +18,7 @@ struct RunOptions {
   std::vector<std::string> case_patterns;
   std::vector<std::string> method_ids;  ///< built-in or external method ids; empty: every built-in
   /// External methods defined for this run (--external, a suite's "external_methods"): each
-  /// runs beside `method_ids`. A predefined one may also be named in
+  /// runs beside `method_ids`. A predefined one (meshlab_close_holes) may also be named in
   /// `method_ids` without being defined here.
   std::vector<ExternalMethodSpec> external_methods;
   std::vector<std::string> users{"no_user"};  ///< "no_user", "oracle"

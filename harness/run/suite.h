@@ -53,7 +53,7 @@ struct Suite {
   std::vector<std::string> methods;  ///< empty: every built-in method
   /// "external_methods": programs run as methods beside `methods`, each
   /// {"name": ..., "command": ..., optionally "vertex_tolerance_rel_diag": ...}, or
-  /// {"name": ...} alone for a predefined one.
+  /// {"name": ...} alone for a predefined one (meshlab_close_holes).
   std::vector<ExternalMethodSpec> external_methods;
   std::vector<std::string> users{"no_user"};
   std::vector<double> noise_levels{0.0};

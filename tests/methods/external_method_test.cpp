@@ -10,6 +10,7 @@
 #include "generators/case_catalog.h"
 #include "methods/external/external_method_spec.h"
 #include "methods/external/output_patch.h"
+#include "methods/external/predefined_external_methods.h"
 #include "methods/external/program_run.h"
 #include "methods/registry.h"
 #include "tests/methods/method_invariants.h"
@@ -172,6 +173,30 @@ TEST(ExternalMethod, AMissingRequiredProgramIsNamed) {
   EXPECT_EQ(result.status, MethodStatus::Failed);
   EXPECT_TRUE(contains(result.message, "skipped: no_such_program_for_holebench is not installed"))
       << result.message;
+}
+
+// Predefined external methods run by name only: never among the built-ins.
+TEST(PredefinedExternalMethods, AreNotBuiltIns) {
+  ASSERT_TRUE(find_predefined_external_method("meshlab_close_holes"));
+  EXPECT_FALSE(find_predefined_external_method("liepa_cgal"));
+  for (const auto& method : make_all_methods())
+    EXPECT_NE(method->id(), "meshlab_close_holes");
+  EXPECT_THROW(make_method("meshlab_close_holes"), std::invalid_argument);
+}
+
+// MeshLab's Close Holes through meshlabserver (skipped where it is not installed): closes the
+// box's holes and keeps the input's faces (matched within its single precision).
+TEST(PredefinedExternalMethods, MeshlabCloseHolesClosesTheBoxHoles) {
+  if (!program_on_path("meshlabserver") || !program_on_path("xvfb-run"))
+    GTEST_SKIP() << "meshlabserver or xvfb-run not installed (Debian packages meshlab, xvfb)";
+  for (const char* id : {"box/face_interior", "box/corner"}) {
+    const Case c = generators::make_case(id);
+    const MethodResult result =
+        run_external_method(c.input, *find_predefined_external_method("meshlab_close_holes"));
+    ASSERT_EQ(result.status, MethodStatus::Ok) << id << ": " << result.message;
+    EXPECT_TRUE(find_boundary_loops(result.repaired).empty()) << id;
+    EXPECT_GT(count_new_faces(result.repaired), 0u) << id;
+  }
 }
 
 }  // namespace

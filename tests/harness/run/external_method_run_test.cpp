@@ -116,9 +116,15 @@ TEST(ExternalMethodRun, ThePlanAddsExternalMethodsAndChecksTheirNames) {
   EXPECT_EQ(jobs[1].method_id, "fan_fill");
   EXPECT_FALSE(jobs[0].external.has_value());
   ASSERT_TRUE(jobs[1].external.has_value());
-  // Every built-in by default.
-  options.method_ids.clear();
+  // A predefined one by name, without a definition.
+  options.method_ids = {"meshlab_close_holes"};
   options.external_methods.clear();
+  jobs = plan_jobs(options, catalog);
+  ASSERT_EQ(jobs.size(), 2u);
+  ASSERT_TRUE(jobs[0].external.has_value());
+  EXPECT_NE(jobs[0].external->command.find("meshlabserver"), std::string::npos);
+  // Every built-in by default; predefined external methods only by name.
+  options.method_ids.clear();
   for (const auto& job : plan_jobs(options, catalog))
     EXPECT_FALSE(job.external.has_value()) << job.id();
   // A built-in's id, or a name defined twice, is refused.
@@ -132,25 +138,29 @@ TEST(ExternalMethodRun, SuitesDefineExternalMethodsOrNamePredefinedOnes) {
   const auto dir = fresh_dir("external_suite");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "with_external.json") << R"({"cases": ["box/*"], "external_methods": [
-      {"name": "fan_fill", "command": "python3 fan_fill.py {input} {output}"}]})";
+      {"name": "fan_fill", "command": "python3 fan_fill.py {input} {output}"},
+      {"name": "meshlab_close_holes"}]})";
   const Suite suite = load_suite("with_external", dir);
-  ASSERT_EQ(suite.external_methods.size(), 1u);
+  ASSERT_EQ(suite.external_methods.size(), 2u);
   EXPECT_EQ(suite.external_methods[0].command, "python3 fan_fill.py {input} {output}");
+  EXPECT_EQ(suite.external_methods[1].name, "meshlab_close_holes");
+  EXPECT_FALSE(suite.external_methods[1].required_programs.empty());
   std::ofstream(dir / "bad_placeholder.json")
       << R"({"cases": ["box/*"], "external_methods": [{"name": "x", "command": "x {in} {output}"}]})";
   EXPECT_THROW(load_suite("bad_placeholder", dir), InvalidInputError);
   std::ofstream(dir / "unknown_predefined.json")
       << R"({"cases": ["box/*"], "external_methods": [{"name": "nothing_known"}]})";
   EXPECT_THROW(load_suite("unknown_predefined", dir), InvalidInputError);
-  // The shipped suites run no external method (a process per job).
-  for (const char* name : {"default", "smoke", "nightly", "paper"})
+  // The paper suite runs MeshLab's Close Holes; the others do not (a process per job).
+  EXPECT_EQ(load_suite("paper").external_methods.size(), 1u);
+  for (const char* name : {"default", "smoke", "nightly"})
     EXPECT_TRUE(load_suite(name).external_methods.empty()) << name;
 }
 
 TEST(ExternalMethodRun, TheRecordNamesTheCommandAndReadsBack) {
   JobRecord record;
-  record.job = {"box/corner", "f32_fill", 0.0, 0, "no_user"};
-  record.job.external = ExternalMethodSpec{"f32_fill", "m {input} {output}", 1e-6, {}};
+  record.job = {"box/corner", "meshlab_close_holes", 0.0, 0, "no_user"};
+  record.job.external = ExternalMethodSpec{"meshlab_close_holes", "m {input} {output}", 1e-6, {}};
   const auto j = record_to_json(record);
   EXPECT_EQ(j["method_options"]["command"], "m {input} {output}");
   EXPECT_EQ(j["method_options"]["vertex_tolerance_rel_diag"], 1e-6);
