@@ -138,6 +138,11 @@ struct FailureKind {
   std::string expected_in_message;
 };
 
+// The test's name in listings (instead of the object's bytes).
+void PrintTo(const FailureKind& kind, std::ostream* out) {
+  *out << kind.name;
+}
+
 class ExternalMethodFailures : public ::testing::TestWithParam<FailureKind> {};
 
 TEST_P(ExternalMethodFailures, AreFailedResultsThatSayWhy) {
