@@ -73,12 +73,13 @@ TEST(ExternalMethodRun, AProgramPastTheTimeLimitIsStoppedWithItsJob) {
   RunOptions options = fan_fill_run("external_timeout");
   options.case_patterns = {"box/corner"};
   const auto pid_file = options.out_dir.parent_path() / "holebench_test_external_timeout.pid";
+  const auto dir_file = options.out_dir.parent_path() / "holebench_test_external_timeout.dir";
   std::filesystem::remove(pid_file);
-  options.external_methods = {
-      {"fan_fill",
-       "echo $$ > '" + pid_file.string() + "'; exec sleep 60; : {input} {output}",
-       0.0,
-       {}}};
+  options.external_methods = {{"fan_fill",
+                               "dirname {input} > '" + dir_file.string() + "'; echo $$ > '" +
+                                   pid_file.string() + "'; exec sleep 60; : {output}",
+                               0.0,
+                               {}}};
   options.runner.timeout_seconds = 2.0;
   const RunSummary summary = run_jobs(options);
   ASSERT_EQ(summary.records.size(), 1u);
@@ -101,6 +102,12 @@ TEST(ExternalMethodRun, AProgramPastTheTimeLimitIsStoppedWithItsJob) {
       ::usleep(20000);
   }
   EXPECT_TRUE(gone) << "the program (pid " << pid << ") outlived its job";
+  // Its temporary files went with the job's temporary folder.
+  std::string input_dir;
+  std::ifstream dir_in(dir_file);
+  ASSERT_TRUE(std::getline(dir_in, input_dir));
+  EXPECT_FALSE(input_dir.empty());
+  EXPECT_FALSE(std::filesystem::exists(input_dir)) << input_dir;
 }
 
 TEST(ExternalMethodRun, ThePlanAddsExternalMethodsAndChecksTheirNames) {
