@@ -15,6 +15,8 @@
 #include "harness/run/output_folder_lock.h"
 #include "harness/run/run_command.h"
 #include "harness/run/suite.h"
+#include "methods/external/external_method_spec.h"
+#include "methods/external/predefined_external_methods.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
@@ -207,7 +209,20 @@ int main(int argc, char** argv) {
                   "options below, where given, override it");
   run->add_option("--case", run_options.case_patterns,
                   "Case id or pattern, repeatable (default: the default suite's)");
-  run->add_option("--method", run_options.method_ids, "Method id, repeatable (default: all)");
+  run->add_option("--method", run_options.method_ids,
+                  "Method id, repeatable (default: every built-in method): a built-in, a "
+                  "predefined external method (meshlab_close_holes) or an --external name");
+  std::vector<std::string> external_texts;
+  run->add_option("--external", external_texts,
+                  "A program as a method, repeatable: 'name=NAME;command=COMMAND', COMMAND "
+                  "reading {input} (the holed mesh, binary PLY) and writing {output} (the "
+                  "repaired mesh, PLY; the input's faces unchanged, new faces are the patch), "
+                  "e.g. 'name=my_fill;command=python3 my_fill.py {input} {output}'. It runs "
+                  "beside the --method ids (default: every built-in); add --method NAME to run "
+                  "it alone. Optional before command=: vertex_tolerance_rel_diag=X, to match "
+                  "single-precision output (docs/methods.md)")
+      ->type_name("'name=NAME;command=COMMAND'")
+      ->check(parsed_by(holebench::parse_external_method_spec, "'name=NAME;command=COMMAND'"));
   run->add_option("--noise", run_options.noise_levels,
                   "Noise level in % of 1 % of the diagonal, repeatable (default: 0)")
       ->check(CLI::NonNegativeNumber);
@@ -392,6 +407,9 @@ int main(int argc, char** argv) {
       fmt::print("methods:\n");
       for (const auto& m : holebench::make_all_methods())
         fmt::print("  {:<16} {}\n", m->id(), m->description());
+      fmt::print("external methods holebench predefines (run by name: --method NAME):\n");
+      for (const auto& spec : holebench::predefined_external_methods())
+        fmt::print("  {:<16} {}\n", spec.name, spec.command);
       fmt::print(
           "case families (see `holebench cases list`):\n"
           "  box/<target>                  the walking skeleton's box holes\n"
@@ -453,6 +471,8 @@ int main(int argc, char** argv) {
         options.method_repetitions = method_repetitions;
       if (!shard_text.empty())
         options.shard = holebench::harness::parse_shard(shard_text);
+      for (const auto& text : external_texts)
+        options.external_methods.push_back(holebench::parse_external_method_spec(text));
       const auto summary = holebench::harness::run_jobs(options);
       print_summary_table(summary);
       return 0;

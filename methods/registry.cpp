@@ -1,6 +1,7 @@
 #include "methods/registry.h"
 
 #include "methods/brep_guidance/brep_guidance.h"
+#include "methods/cgal_triangulate/cgal_triangulate.h"
 #include "methods/crest_feature/crest_feature.h"
 #include "methods/liepa_cgal/liepa_cgal.h"
 #include "methods/slice_loft/slice_loft.h"
@@ -16,6 +17,7 @@ std::vector<std::unique_ptr<Method>> make_all_methods() {
   methods.push_back(std::make_unique<SliceLoftMethod>());
   methods.push_back(std::make_unique<SliceLoftMethod>(SliceLoftMethod::direct()));
   methods.push_back(std::make_unique<CrestFeatureMethod>());
+  methods.push_back(std::make_unique<CgalTriangulateMethod>());
   return methods;
 }
 

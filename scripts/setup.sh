@@ -16,9 +16,10 @@ packages=(
   libfmt-dev nlohmann-json3-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev
-  # cross-check of the distance metrics against MeshLab (tests/metrics/meshlab_hausdorff_test.cpp)
+  # MeshLab: the cross-check of the distance metrics (tests/metrics/meshlab_hausdorff_test.cpp)
+  # and the external method meshlab_close_holes (methods/external/), run under xvfb-run
   meshlab xvfb xauth
-  # reports: plots
+  # reports: plots; the worked example of an external method (examples/fan_fill.py)
   python3 python3-matplotlib
   # formatting of the sources
   clang-format

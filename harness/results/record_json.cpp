@@ -120,6 +120,12 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
   j["case_id"] = record.job.case_id;
   j["method"] = record.job.method_id;
   j["seed"] = record.job.seed;
+  if (record.job.external) {
+    nlohmann::ordered_json options = {{"command", record.job.external->command}};
+    if (record.job.external->vertex_tolerance_rel_diag > 0.0)
+      options["vertex_tolerance_rel_diag"] = record.job.external->vertex_tolerance_rel_diag;
+    j["method_options"] = options;
+  }
   j["case_family"] = record.case_family;
   j["case_kind"] = record.case_kind;
   j["noise_percent"] = record.job.noise_percent;
@@ -172,6 +178,15 @@ JobRecord record_from_json(const nlohmann::json& j) {
   record.job.case_id = j["case_id"].get<std::string>();
   record.job.method_id = j["method"].get<std::string>();
   record.job.seed = value_or<std::uint64_t>(j, "seed", 0);
+  if (j.contains("method_options") && j["method_options"].is_object() &&
+      j["method_options"].contains("command")) {
+    ExternalMethodSpec spec;
+    spec.name = record.job.method_id;
+    spec.command = value_or<std::string>(j["method_options"], "command", "");
+    spec.vertex_tolerance_rel_diag =
+        value_or(j["method_options"], "vertex_tolerance_rel_diag", 0.0);
+    record.job.external = spec;
+  }
   record.job.noise_percent = value_or(j, "noise_percent", 0.0);
   record.job.user = value_or<std::string>(j, "user", "no_user");
   record.case_family = value_or<std::string>(j, "case_family", "");

@@ -199,6 +199,21 @@ bool check_fields(const nlohmann::json& j, std::set<std::string>& unusable, cons
         report("finite", name + " is not a number: " + value.dump());
     }
   }
+  // An external method's record names its command: {"command": "...", optionally
+  // "vertex_tolerance_rel_diag": number}.
+  if (const auto options = j.find("method_options"); options != j.end()) {
+    const auto command = options->is_object() ? options->find("command") : options->end();
+    const auto tolerance =
+        options->is_object() ? options->find("vertex_tolerance_rel_diag") : options->end();
+    if (!options->is_object() || command == options->end() || !command->is_string() ||
+        (tolerance != options->end() && !tolerance->is_number())) {
+      report("field_type",
+             "\"method_options\" is not an object with a string \"command\" "
+             "(and a number \"vertex_tolerance_rel_diag\" if any): " +
+                 options->dump());
+      complete = false;
+    }
+  }
   if (const auto status = j.find("status"); status != j.end() && status->is_string()) {
     try {
       job_status_from_string(status->get<std::string>());

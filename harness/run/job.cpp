@@ -8,6 +8,7 @@
 #include "harness/outputs/render/snapshot.h"
 #include "harness/run/oracle_user.h"
 #include "methods/common/cgal_random.h"
+#include "methods/external/external_method.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
@@ -83,7 +84,8 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
   }
 
   try {
-    const auto method = make_method(job.method_id);
+    const std::unique_ptr<Method> method =
+        job.external ? std::make_unique<ExternalMethod>(*job.external) : make_method(job.method_id);
     const std::unique_ptr<User> user = make_user(job.user, c);
     record.user = user->kind();
     const auto start = Clock::now();

@@ -3,11 +3,13 @@
 
 #include "core/statistics.h"  // median_of: a job's method time over repetitions
 #include "generators/case_catalog.h"
+#include "methods/external/external_method_spec.h"
 #include "methods/method.h"
 #include "metrics/evaluation.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,9 @@ struct Job {
   double noise_percent = 0.0;  ///< vertex noise of the input, % of 1 % of the diagonal
   std::uint64_t seed = 0;
   std::string user = "no_user";  ///< who answers the method's questions: "no_user", "oracle"
+  /// Set when the method is an external program (`method_id` is its name): the command the
+  /// job runs, which its record names ("method_options").
+  std::optional<ExternalMethodSpec> external;
 
   /// Stable key used to match records across runs: "case_id|method_id|user|noise|seed".
   std::string id() const;

@@ -5,26 +5,68 @@
 #include "harness/run/case_selection.h"
 #include "harness/run/oracle_user.h"
 #include "harness/run/output_folder_lock.h"
+#include "methods/external/predefined_external_methods.h"
 #include "methods/registry.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace holebench::harness {
 
+namespace {
+
+bool is_builtin_method(const std::string& id) {
+  for (const auto& method : make_all_methods()) {
+    if (method->id() == id)
+      return true;
+  }
+  return false;
+}
+
+// The external methods by name: those defined for the run, each once and none named like a
+// built-in.
+std::map<std::string, ExternalMethodSpec> defined_external_methods(const RunOptions& options) {
+  std::map<std::string, ExternalMethodSpec> defined;
+  for (const auto& spec : options.external_methods) {
+    check_external_method_name(spec.name);
+    check_command_template(spec.command);
+    if (is_builtin_method(spec.name)) {
+      throw std::invalid_argument("external method '" + spec.name +
+                                  "': that is a built-in method's id");
+    }
+    if (!defined.emplace(spec.name, spec).second)
+      throw std::invalid_argument("external method '" + spec.name + "' is defined twice");
+  }
+  return defined;
+}
+
+}  // namespace
+
 std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog) {
   const auto cases = select_cases(
       catalog, options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+  std::map<std::string, ExternalMethodSpec> external = defined_external_methods(options);
   std::vector<std::string> methods = options.method_ids;
   if (methods.empty()) {
     for (const auto& method : make_all_methods())
       methods.push_back(method->id());
-  } else {
-    for (const auto& id : methods)
+  }
+  for (const auto& id : methods) {
+    if (external.count(id) || is_builtin_method(id))
+      continue;
+    if (auto predefined = find_predefined_external_method(id))
+      external.emplace(id, *predefined);
+    else
       make_method(id);  // throws for an unknown id
+  }
+  for (const auto& spec : options.external_methods) {
+    if (std::find(methods.begin(), methods.end(), spec.name) == methods.end())
+      methods.push_back(spec.name);
   }
   for (const auto& user : options.users)
     check_user_kind(user);
@@ -33,8 +75,12 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
     for (const auto& method_id : methods) {
       for (const auto& user : options.users) {
         for (double noise : options.noise_levels) {
-          for (auto seed : options.seeds)
-            jobs.push_back({c.id, method_id, noise, seed, user});
+          for (auto seed : options.seeds) {
+            Job job{c.id, method_id, noise, seed, user};
+            if (const auto it = external.find(method_id); it != external.end())
+              job.external = it->second;
+            jobs.push_back(std::move(job));
+          }
         }
       }
     }
@@ -46,6 +92,7 @@ RunOptions run_options_from_suite(const Suite& suite) {
   RunOptions options;
   options.case_patterns = suite.case_patterns;
   options.method_ids = suite.methods;
+  options.external_methods = suite.external_methods;
   options.users = suite.users;
   options.noise_levels = suite.noise_levels;
   options.seeds = suite.seeds;

@@ -16,7 +16,11 @@ struct RunOptions {
   std::filesystem::path out_dir;
   /// Case ids or wildcard patterns ('*', '?'); empty: default_case_patterns().
   std::vector<std::string> case_patterns;
-  std::vector<std::string> method_ids;        ///< empty: every method
+  std::vector<std::string> method_ids;  ///< built-in or external method ids; empty: every built-in
+  /// External methods defined for this run (--external, a suite's "external_methods"): each
+  /// runs beside `method_ids`. A predefined one (meshlab_close_holes) may also be named in
+  /// `method_ids` without being defined here.
+  std::vector<ExternalMethodSpec> external_methods;
   std::vector<std::string> users{"no_user"};  ///< "no_user", "oracle"
   std::vector<double> noise_levels{0.0};      ///< % of 1 % of the diagonal
   std::vector<std::uint64_t> seeds{0};
@@ -43,8 +47,10 @@ struct RunSummary {
   std::filesystem::path results_csv;
 };
 
-/// The jobs of `options` over `catalog`, in a fixed order (case, method, noise, seed).
-/// Throws std::invalid_argument for an unknown case or method id.
+/// The jobs of `options` over `catalog`, in a fixed order (case, method, noise, seed); the
+/// methods are `method_ids` (every built-in if empty), then the external methods not named
+/// there. Throws std::invalid_argument for an unknown case or method id, and for an external
+/// method whose name is a built-in's or is defined twice.
 std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog);
 
 /// The catalog options `run_jobs` builds its catalog with: `options.catalog`, limited to the

@@ -46,7 +46,17 @@ struct Child {
   Clock::time_point started;
   std::string output;
   bool timed_out = false;
+  std::filesystem::path temporary_dir;  ///< the child's TMPDIR, removed when it ends
 };
+
+// A fresh folder for one job's temporary files (an external method's mesh files): the job
+// sees it as TMPDIR, and the runner removes it when the job ends, even when it was stopped.
+std::filesystem::path make_job_temporary_dir() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "holebench-job-XXXXXX").string();
+  if (!::mkdtemp(pattern.data()))
+    throw std::runtime_error("mkdtemp " + pattern + ": " + std::strerror(errno));
+  return pattern;
+}
 
 void write_all(int fd, const std::string& text) {
   const char* data = text.data();
@@ -64,6 +74,7 @@ void write_all(int fd, const std::string& text) {
 }
 
 Child start_child(const Job& job, std::size_t index, const JobFunction& run_one) {
+  const std::filesystem::path temporary_dir = make_job_temporary_dir();
   int fds[2];
   if (::pipe(fds) != 0)
     throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
@@ -78,6 +89,10 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one)
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent)
       std::_Exit(1);
+    // Its own process group, which the processes it starts (an external method's program
+    // and that program's children) join: a timeout stops them all.
+    ::setpgid(0, 0);
+    ::setenv("TMPDIR", temporary_dir.c_str(), 1);
     ::close(fds[0]);
     // The child: run the job, send its record, leave without running the parent's atexit
     // handlers or destructors.
@@ -98,12 +113,14 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one)
     ::close(fds[1]);
     std::_Exit(0);
   }
+  ::setpgid(pid, pid);  // also here: the group exists before any kill (either call may be first)
   ::close(fds[1]);
   Child child;
   child.pid = pid;
   child.pipe_fd = fds[0];
   child.job_index = index;
   child.started = Clock::now();
+  child.temporary_dir = temporary_dir;
   return child;
 }
 
@@ -241,7 +258,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       }
       const double elapsed = std::chrono::duration<double>(Clock::now() - child.started).count();
       if (options.timeout_seconds > 0 && elapsed > options.timeout_seconds && !child.timed_out) {
-        ::kill(child.pid, SIGKILL);
+        ::kill(-child.pid, SIGKILL);  // the job's process group
         child.timed_out = true;
       }
       int status = 0;
@@ -253,6 +270,8 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       for (ssize_t n; (n = ::read(child.pipe_fd, buffer, sizeof(buffer))) > 0;)
         child.output.append(buffer, n);
       ::close(child.pipe_fd);
+      std::error_code ignored;
+      std::filesystem::remove_all(child.temporary_dir, ignored);
       const Job& job = jobs[child.job_index];
       JobRecord record = finish_child(child, job, status);
       write_all(fd, record_to_json_line(record) + "\n");

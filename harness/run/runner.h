@@ -3,11 +3,14 @@
 //
 // Each job runs in a child process (fork) that sends its record back through a pipe. The
 // parent keeps up to `workers` children running, stops a child that passes the timeout
-// (status timeout), and records a child that dies without a record (status crash, with the
-// signal). A child dies with the runner's process (PR_SET_PDEATHSIG), so a run killed
-// outright leaves no job running behind it. Every finished record is appended to
-// records.jsonl with one write on an O_APPEND descriptor and flushed to disk, so an
-// interrupted run loses nothing and `resume` skips the jobs already there. Records depend
+// (status timeout; the child leads a process group, and the whole group is stopped, so a
+// program an external method started goes with it), and records a child that dies without a
+// record (status crash, with the signal). A child dies with the runner's process
+// (PR_SET_PDEATHSIG), so a run killed outright leaves no job running behind it. Each child has
+// its own TMPDIR, a fresh folder removed when the child ends, so a stopped job leaves no
+// temporary files (an external method's meshes) behind. Every finished
+// record is appended to records.jsonl with one write on an O_APPEND descriptor and flushed to disk,
+// so an interrupted run loses nothing and `resume` skips the jobs already there. Records depend
 // only on their job: the same records come out whatever the number of workers (up to
 // timings).
 #pragma once

@@ -1,6 +1,7 @@
 #include "harness/run/suite.h"
 
 #include "core/errors.h"
+#include "methods/external/predefined_external_methods.h"
 
 #include <nlohmann/json.hpp>
 
@@ -67,6 +68,23 @@ MetricTolerance tolerance_from(const nlohmann::json& j, MetricTolerance base) {
   return base;
 }
 
+ExternalMethodSpec external_method_from(const nlohmann::json& j) {
+  const auto name = j.at("name").get<std::string>();
+  if (!j.contains("command")) {
+    if (auto predefined = find_predefined_external_method(name))
+      return *predefined;
+    throw std::invalid_argument("external method '" + name +
+                                "' has no \"command\" and is not a predefined one");
+  }
+  ExternalMethodSpec spec;
+  spec.name = name;
+  spec.command = j["command"].get<std::string>();
+  spec.vertex_tolerance_rel_diag = j.value("vertex_tolerance_rel_diag", 0.0);
+  check_external_method_name(spec.name);
+  check_command_template(spec.command);
+  return spec;
+}
+
 }  // namespace
 
 Suite load_suite(const std::string& name_or_path, const std::filesystem::path& suites_dir) {
@@ -88,6 +106,8 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& s
     suite.description = j.value("description", "");
     suite.case_patterns = j.at("cases").get<std::vector<std::string>>();
     suite.methods = j.value("methods", std::vector<std::string>{});
+    for (const auto& entry : j.value("external_methods", nlohmann::json::array()))
+      suite.external_methods.push_back(external_method_from(entry));
     suite.users = j.value("users", suite.users);
     suite.noise_levels = j.value("noise_percent", suite.noise_levels);
     suite.seeds = j.value("seeds", suite.seeds);

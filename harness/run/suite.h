@@ -4,6 +4,7 @@
 #pragma once
 
 #include "generators/case_catalog.h"
+#include "methods/external/external_method_spec.h"
 #include "metrics/evaluation.h"
 
 #include <filesystem>
@@ -49,7 +50,11 @@ struct Suite {
   std::string name;
   std::string description;
   std::vector<std::string> case_patterns;
-  std::vector<std::string> methods;  ///< empty: all
+  std::vector<std::string> methods;  ///< empty: every built-in method
+  /// "external_methods": programs run as methods beside `methods`, each
+  /// {"name": ..., "command": ..., optionally "vertex_tolerance_rel_diag": ...}, or
+  /// {"name": ...} alone for a predefined one (meshlab_close_holes).
+  std::vector<ExternalMethodSpec> external_methods;
   std::vector<std::string> users{"no_user"};
   std::vector<double> noise_levels{0.0};
   std::vector<std::uint64_t> seeds{0};

@@ -69,6 +69,13 @@ TEST(ValidateResults, FindsMissingRequiredFields) {
                     {"\"case_id\" is missing", "\"metrics\" is missing"});
 }
 
+// An external method's record names its command in a "method_options" object; a record whose
+// method_options is not such an object is reported (the first record is well formed).
+TEST(ValidateResults, FindsMethodOptionsThatAreNotAnObjectWithACommand) {
+  expect_violations("field_type.json", {{"box/edge|fan_fill|no_user|0|0", "field_type"}},
+                    {"\"method_options\" is not an object"});
+}
+
 TEST(ValidateResults, FindsAnUnknownStatus) {
   expect_violations("status.json", {{kCorner, "status"}}, {"unknown job status 'fine'"});
 }
