@@ -600,8 +600,10 @@ int main(int argc, char** argv) {
     }
     if (report->parsed()) {
       const auto data = holebench::harness::read_results_json(report_dir / "results.json");
-      const auto summary = holebench::harness::report::write_report(data, report_dir);
-      fmt::print("{}", holebench::harness::report::console_summary(data));
+      const holebench::harness::report::ReportOptions report_options;
+      const auto summary =
+          holebench::harness::report::write_report(data, report_dir, report_options);
+      fmt::print("{}", holebench::harness::report::console_summary(data, report_options));
       fmt::print("\nReport: {}\n", (summary.dir / "report.html").string());
       return 0;
     }
