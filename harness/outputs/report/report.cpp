@@ -379,6 +379,9 @@ std::string report_html(const ResultsData& data, const Leaderboard& board,
   if (std::filesystem::exists(results_dir / "gallery.html")) {
     out += " The cases: <a href=\"../gallery.html\">case gallery</a>.";
   }
+  if (std::filesystem::exists(results_dir / "report" / "history.html")) {
+    out += " Earlier runs: <a href=\"history.html\">history</a>.";
+  }
   out += "</p>\n";
 
   out += "<h2>Summary: method &times; case kind</h2>\n" + html_table(table);
