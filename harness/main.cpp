@@ -6,6 +6,7 @@
 #include "harness/cluster/slurm_submit.h"
 #include "harness/outputs/case_export.h"
 #include "harness/outputs/case_gallery.h"
+#include "harness/outputs/history.h"
 #include "harness/outputs/paper_figures.h"
 #include "harness/outputs/report/report.h"
 #include "harness/results/compare.h"
@@ -394,6 +395,24 @@ int main(int argc, char** argv) {
                    "results.json of the paper suite (holebench run --suite paper)")
       ->check(CLI::ExistingFile);
 
+  std::vector<std::filesystem::path> history_files;
+  std::filesystem::path history_out;
+  holebench::harness::HistoryOptions history_options;
+  auto* history = app.add_subcommand(
+      "history",
+      "Write DIR/history.html: per method, trend lines of the headline numbers (median hole "
+      "Hausdorff distance, success share, fallback share, median method time) across "
+      "successive results files (ordered by their context's date, then code version), with "
+      "the regressions `holebench compare` flags between consecutive runs circled");
+  history
+      ->add_option("results", history_files,
+                   "results.json files of successive runs (any order; at least one)")
+      ->required();
+  history->add_option("--out", history_out, "Output folder (created)")->required();
+  history->add_option("--suite", history_options.suite,
+                      "Suite whose tolerances judge regressions (default: the suite each newer "
+                      "run names; without one, the built-in tolerances)");
+
   std::filesystem::path report_dir;
   auto* report = app.add_subcommand(
       "report", "Write DIR/report/: summary tables (Markdown, CSV, LaTeX), plots and an HTML page");
@@ -576,20 +595,14 @@ int main(int argc, char** argv) {
     if (compare->parsed()) {
       const auto base_results = holebench::harness::read_results_json(compare_base);
       const auto new_results = holebench::harness::read_results_json(compare_new);
-      holebench::harness::Tolerances tolerances;
-      if (!compare_suite.empty()) {
-        tolerances = holebench::harness::load_suite(compare_suite).tolerances;
-      } else {
-        const auto names = holebench::harness::list_suites();
-        const std::string& named = new_results.context.suite;
-        if (std::find(names.begin(), names.end(), named) != names.end()) {
-          tolerances = holebench::harness::load_suite(named).tolerances;
-        } else {
-          fmt::print(stderr,
-                     "holebench compare: the results name no known suite ('{}'): judging by the "
-                     "built-in tolerances (give --suite NAME for a suite's)\n",
-                     named);
-        }
+      bool used_defaults = false;
+      const auto tolerances = holebench::harness::comparison_tolerances(
+          compare_suite, new_results.context.suite, &used_defaults);
+      if (used_defaults) {
+        fmt::print(stderr,
+                   "holebench compare: the results name no known suite ('{}'): judging by the "
+                   "built-in tolerances (give --suite NAME for a suite's)\n",
+                   new_results.context.suite);
       }
       const auto comparison =
           holebench::harness::compare_results(base_results, new_results, tolerances);
@@ -618,10 +631,29 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
+    if (history->parsed()) {
+      std::vector<holebench::harness::HistoryRun> runs;
+      for (const auto& file : history_files)
+        runs.push_back({file.string(), holebench::harness::read_results_json(file)});
+      const auto result = holebench::harness::compute_history(std::move(runs), history_options);
+      for (const auto& note : result.notes)
+        fmt::print(stderr, "holebench history: {}\n", note);
+      std::size_t flagged = 0;
+      for (const auto& per_method : result.regressions) {
+        for (const auto& jobs : per_method)
+          flagged += jobs.empty() ? 0 : 1;
+      }
+      const auto path = holebench::harness::write_history(result, history_out);
+      fmt::print("{} runs, {} methods, {} regression marks\nHistory: {}\n", result.runs.size(),
+                 result.methods.size(), flagged, path.string());
+      return 0;
+    }
     if (report->parsed()) {
       const auto data = holebench::harness::read_results_json(report_dir / "results.json");
-      const auto summary = holebench::harness::report::write_report(data, report_dir);
-      fmt::print("{}", holebench::harness::report::console_summary(data));
+      const holebench::harness::report::ReportOptions report_options;
+      const auto summary =
+          holebench::harness::report::write_report(data, report_dir, report_options);
+      fmt::print("{}", holebench::harness::report::console_summary(data, report_options));
       fmt::print("\nReport: {}\n", (summary.dir / "report.html").string());
       return 0;
     }

@@ -35,6 +35,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "core/statistics.h"
 #include "metrics/hausdorff_distance.h"
 
 #include <algorithm>
@@ -86,11 +87,7 @@ DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::Triangl
                                             const KnownDistances& known = {});
 
 /// A value with a guaranteed interval: lower <= true value <= upper, value in between.
-struct DistanceInterval {
-  double lower = 0.0;
-  double value = 0.0;
-  double upper = 0.0;
-};
+using DistanceInterval = BoundedValue;
 
 /// Mean, RMS and Hausdorff distance of one comparison, each with its interval, clamped by
 /// the relations of the true values (0 <= mean <= RMS <= Hausdorff): mean.upper <=

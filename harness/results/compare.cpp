@@ -141,6 +141,20 @@ std::map<std::string, double> metric_map(const JobRecord& record) {
 
 }  // namespace
 
+Tolerances comparison_tolerances(const std::string& suite, const std::string& named_suite,
+                                 bool* used_defaults) {
+  if (used_defaults)
+    *used_defaults = false;
+  if (!suite.empty())
+    return load_suite(suite).tolerances;
+  const auto names = list_suites();
+  if (std::find(names.begin(), names.end(), named_suite) != names.end())
+    return load_suite(named_suite).tolerances;
+  if (used_defaults)
+    *used_defaults = true;
+  return Tolerances{};
+}
+
 Comparison compare_results(const ResultsData& base, const ResultsData& now,
                            const Tolerances& tolerances) {
   Comparison comparison;

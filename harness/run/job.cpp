@@ -23,6 +23,14 @@ std::string Job::id() const {
   return fmt::format("{}|{}|{}|{}|{}", case_id, method_id, user, noise_percent, seed);
 }
 
+const double* JobRecord::metric(const std::string& name) const {
+  for (const auto& m : metrics) {
+    if (m.name == name)
+      return &m.value;
+  }
+  return nullptr;
+}
+
 const char* to_string(JobStatus status) {
   switch (status) {
     case JobStatus::Ok:

@@ -71,6 +71,9 @@ struct JobRecord {
   /// Wall time of the job's stages: "case" (generation), "method", "evaluation", "snapshot".
   std::vector<PhaseTiming> stages;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
+
+  /// The value of the metric `name`, or nullptr when the record does not have it.
+  const double* metric(const std::string& name) const;
 };
 
 struct JobOptions {

@@ -1,6 +1,7 @@
 #include "harness/outputs/report/report.h"
 
 #include "harness/outputs/markup_escape.h"
+#include "harness/outputs/report/leaderboard.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -42,14 +44,6 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   out << text;
   if (!out)
     throw std::runtime_error(path.string() + ": cannot write");
-}
-
-const double* find_metric(const JobRecord& record, const std::string& name) {
-  for (const auto& metric : record.metrics) {
-    if (metric.name == name)
-      return &metric.value;
-  }
-  return nullptr;
 }
 
 std::string case_kind_of(const JobRecord& record) {
@@ -110,7 +104,7 @@ nlohmann::ordered_json plot_data(const ResultsData& data) {
       for (double noise : noise_levels) {
         std::vector<double> values;
         for (const auto& r : data.records) {
-          const double* v = find_metric(r, metric);
+          const double* v = r.metric(metric);
           if (v && r.job.method_id == method && r.job.noise_percent == noise)
             values.push_back(*v);
         }
@@ -142,7 +136,7 @@ nlohmann::ordered_json plot_data(const ResultsData& data) {
     for (const auto& r : data.records) {
       if (r.job.method_id != method)
         continue;
-      if (const double* v = find_metric(r, "time_method_s"))
+      if (const double* v = r.metric("time_method_s"))
         values.push_back(*v);
     }
     std::sort(values.begin(), values.end());
@@ -189,6 +183,98 @@ std::string make_plots(const ResultsData& data, const std::filesystem::path& plo
 }
 
 // --- HTML -----------------------------------------------------------------------------------
+
+/// One section per family: the family's rows, and the target kinds' rows in a <tbody> that a
+/// checkbox before the table shows or hides (CSS only, no script).
+std::string html_family_section(const Leaderboard& board, std::size_t first, const char* id_prefix,
+                                const std::string& head,
+                                const std::function<std::string(const LeaderboardGroup&)>& rows) {
+  const auto& family = board.groups[first];
+  std::size_t kinds = 0;
+  for (std::size_t i = first + 1; i < board.groups.size() && !board.groups[i].is_family(); ++i)
+    ++kinds;
+  const std::string id = fmt::format("{}-{}", id_prefix, url_path(family.family));
+  std::string out = fmt::format(
+      "<section class=\"family\">\n<h3>{0}</h3>\n<input type=\"checkbox\" class=\"kinds\" "
+      "id=\"{1}\"><label for=\"{1}\">show the {2} target kinds</label>\n<table "
+      "class=\"leaderboard\">\n<thead><tr>{3}</tr></thead>\n<tbody>\n{4}</tbody>\n",
+      html_escape(family.family), id, kinds, head, rows(family));
+  for (std::size_t i = first + 1; i < board.groups.size() && !board.groups[i].is_family(); ++i)
+    out += "<tbody class=\"kind\">\n" + rows(board.groups[i]) + "</tbody>\n";
+  return out + "</table>\n</section>\n";
+}
+
+std::string leaderboard_html(const Leaderboard& board) {
+  const auto& columns = leaderboard_columns();
+  std::string head = "<th>target kind</th><th>method</th><th>jobs</th>";
+  for (const auto& column : columns)
+    head += "<th>" + html_escape(column.header) + "</th>";
+  const auto entry_rows = [&](const LeaderboardGroup& group) {
+    std::string out;
+    for (std::size_t e = 0; e < group.entries.size(); ++e) {
+      const auto& entry = group.entries[e];
+      out +=
+          fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td>", e == 0 ? " class=\"first\"" : "",
+                      e == 0 ? html_escape(group.is_family() ? "all" : group.kind) : "",
+                      html_escape(entry.method), entry.jobs);
+      for (std::size_t c = 0; c < columns.size(); ++c) {
+        out += fmt::format("<td{}>{}</td>", entry.best[c] ? " class=\"best\"" : "",
+                           leaderboard_cell(entry.values[c]));
+      }
+      out += "</tr>\n";
+    }
+    return out;
+  };
+  const auto pair_rows = [&](const LeaderboardGroup& group) {
+    std::string out;
+    for (std::size_t p = 0; p < group.pairs.size(); ++p) {
+      const auto& pair = group.pairs[p];
+      const auto& c = pair.comparison;
+      out += fmt::format(
+          "<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td{}>{}</td><td>{}</td>"
+          "<td{}>{}</td><td>{}</td><td>{}</td></tr>\n",
+          p == 0 ? " class=\"first\"" : "",
+          p == 0 ? html_escape(group.is_family() ? "all" : group.kind) : "",
+          html_escape(pair.first), html_escape(pair.second), pair.shared_jobs, pair.pairs,
+          pair.better == pair.first ? " class=\"best\"" : "", c.wins, c.ties,
+          pair.better == pair.second ? " class=\"best\"" : "", c.losses, leaderboard_p_value(pair),
+          html_escape(pair.better.empty() ? "-" : pair.better));
+    }
+    return out;
+  };
+
+  std::string out =
+      "<h2 id=\"leaderboard\">Leaderboard</h2>\n<p>Per case family, each method's share of "
+      "successful jobs (status ok, every hole closed), share of holes a stand-in handled "
+      "(<em>fallback</em>), median hole Hausdorff distance and new-vertex error (relative to the "
+      "diagonal), mean coverage of the missing sharp edges, and median method time; the best of "
+      "each column is highlighted. Medians are over the jobs that have the metric: read them "
+      "beside the success share. Tick a box to see the target kinds. Also as <a "
+      "href=\"leaderboard.md\">leaderboard.md</a> and <a "
+      "href=\"leaderboard.tex\">leaderboard.tex</a>.</p>\n";
+  for (std::size_t i = 0; i < board.groups.size(); ++i) {
+    if (board.groups[i].is_family())
+      out += html_family_section(board, i, "kinds", head, entry_rows);
+  }
+  out += fmt::format(
+      "<h2 id=\"paired\">Paired comparisons: <code>{}</code></h2>\n<p>Each pair of methods on "
+      "the jobs both ran (same case, noise, seed and user): <em>A better</em> when A's interval "
+      "[value, upper bound] lies wholly below B's, <em>tie</em> when the intervals overlap (the "
+      "error bounds cannot order them); p is the two-sided Wilcoxon signed-rank test on the "
+      "differences A - B, ties counted as 0 (exact up to {} non-zero differences, else the "
+      "normal approximation); <em>better</em> names the method the differences favour when p "
+      "&lt; {:g}.</p>\n",
+      html_escape(board.options.paired_metric), board.options.test.max_exact_n,
+      board.options.significance);
+  const std::string pair_head =
+      "<th>target kind</th><th>A</th><th>B</th><th>jobs</th><th>pairs</th><th>A better</th>"
+      "<th>tie</th><th>B better</th><th>p</th><th>better</th>";
+  for (std::size_t i = 0; i < board.groups.size(); ++i) {
+    if (board.groups[i].is_family())
+      out += html_family_section(board, i, "pairs", pair_head, pair_rows);
+  }
+  return out;
+}
 
 std::string html_table(const SummaryTable& table) {
   std::string out =
@@ -241,7 +327,7 @@ std::string snapshot_grid(const ResultsData& data) {
         }
         const JobRecord& r = *it->second;
         std::string caption = to_string(r.status);
-        if (const double* h = find_metric(r, "hausdorff_rel_diag")) {
+        if (const double* h = r.metric("hausdorff_rel_diag")) {
           caption += fmt::format(", Hausdorff {:.3g}", *h);
         }
         if (r.snapshot.empty()) {
@@ -260,8 +346,9 @@ std::string snapshot_grid(const ResultsData& data) {
   return out;
 }
 
-std::string report_html(const ResultsData& data, const SummaryTable& table,
-                        const std::filesystem::path& results_dir, const std::string& plots_note) {
+std::string report_html(const ResultsData& data, const Leaderboard& board,
+                        const SummaryTable& table, const std::filesystem::path& results_dir,
+                        const std::string& plots_note) {
   const auto& c = data.context;
   std::string out =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -274,17 +361,26 @@ std::string report_html(const ResultsData& data, const SummaryTable& table,
       "tr.flagged { background: #fff3cd; }\n"
       "td.none { color: #888; }\n"
       "figure { display: inline-block; margin: 0 1em 1em 0; }\n"
+      "td.best { font-weight: bold; background: #d4edda; }\n"
+      "table.leaderboard tr.first td { border-top: 2px solid #888; }\n"
+      "table.leaderboard td:nth-child(-n+3) { text-align: left; }\n"
+      "section.family input.kinds:not(:checked) ~ table tbody.kind { display: none; }\n"
       "</style>\n</head>\n<body>\n<h1>holebench report</h1>\n";
   out += fmt::format(
       "<p>Suite <code>{}</code>, code <code>{}</code>, {} build on {}, run {}; {} jobs.</p>\n",
       html_escape(c.suite), html_escape(c.code_version), html_escape(c.build_type),
       html_escape(c.host), html_escape(c.created_utc), data.records.size());
+  out += leaderboard_html(board);
   out +=
-      "<p>Also here: <a href=\"summary.md\">summary.md</a>, <a "
+      "<h2>Files</h2>\n<p>Also here: <a href=\"leaderboard.md\">leaderboard.md</a>, <a "
+      "href=\"leaderboard.tex\">leaderboard.tex</a>, <a href=\"summary.md\">summary.md</a>, <a "
       "href=\"summary.csv\">summary.csv</a>, "
       "<a href=\"tables.tex\">tables.tex</a>, <a href=\"../results.json\">results.json</a>.";
   if (std::filesystem::exists(results_dir / "gallery.html")) {
     out += " The cases: <a href=\"../gallery.html\">case gallery</a>.";
+  }
+  if (std::filesystem::exists(results_dir / "report" / "history.html")) {
+    out += " Earlier runs: <a href=\"history.html\">history</a>.";
   }
   out += "</p>\n";
 
@@ -344,7 +440,10 @@ ReportSummary write_report(const ResultsData& data, const std::filesystem::path&
   write_file(summary.dir / "summary.md", summary_markdown(data, table));
   write_file(summary.dir / "summary.csv", summary_csv(table));
   write_file(summary.dir / "tables.tex", summary_latex(table));
-  summary.files = {"summary.md", "summary.csv", "tables.tex"};
+  const Leaderboard board = compute_leaderboard(data, options.leaderboard);
+  write_file(summary.dir / "leaderboard.md", leaderboard_markdown(board));
+  write_file(summary.dir / "leaderboard.tex", leaderboard_latex(board));
+  summary.files = {"leaderboard.md", "leaderboard.tex", "summary.md", "summary.csv", "tables.tex"};
 
   // Plots: stale pictures go first, so that a failed run cannot show an older one.
   for (const auto& [file, caption] : plot_files())
@@ -361,7 +460,7 @@ ReportSummary write_report(const ResultsData& data, const std::filesystem::path&
   }
 
   write_file(summary.dir / "report.html",
-             report_html(data, table, results_dir, summary.plots_note));
+             report_html(data, board, table, results_dir, summary.plots_note));
   summary.files.push_back("report.html");
   std::sort(summary.files.begin(), summary.files.end());
   return summary;

@@ -3,6 +3,7 @@
 // holds is in docs/reports.md.
 #pragma once
 
+#include "harness/outputs/report/leaderboard.h"
 #include "harness/outputs/report/summary_table.h"
 #include "harness/results/results_reader.h"
 
@@ -13,7 +14,8 @@
 namespace holebench::harness::report {
 
 struct ReportOptions {
-  SummaryOptions summary;  ///< flags of the summary rows (few samples, large spread)
+  LeaderboardOptions leaderboard;  ///< the paired comparisons' metric and significance level
+  SummaryOptions summary;          ///< flags of the summary rows (few samples, large spread)
   /// The Python interpreter that runs the plot script; it needs matplotlib. Debian's, not
   /// the pyenv one that may come first on PATH. Empty: no plots.
   std::string python = "/usr/bin/python3";
@@ -37,7 +39,8 @@ std::filesystem::path default_plot_script();
 /// The console summary (the text of summary.md).
 std::string console_summary(const ResultsData& data, const ReportOptions& options = {});
 
-/// Writes results_dir/report/: summary.md, summary.csv, tables.tex, report.html and
+/// Writes results_dir/report/: leaderboard.md and leaderboard.tex (leaderboard.h, first on
+/// the HTML page), summary.md, summary.csv, tables.tex, report.html and
 /// plots/*.png (with plots/plot_data.json, the numbers the plots show). The records'
 /// snapshot paths are taken relative to results_dir; the HTML links results_dir/gallery.html
 /// when it exists. A missing Python or matplotlib costs the plots only (said in the HTML and

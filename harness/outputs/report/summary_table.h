@@ -84,4 +84,24 @@ std::string summary_latex(const SummaryTable& table);
 /// Escapes LaTeX's special characters (\ & % $ # _ { } ~ ^).
 std::string latex_escape(const std::string& text);
 
+/// 3 significant digits, as every human-facing table shows numbers.
+std::string short_number(double value);
+
+/// short_number for LaTeX: "1.23e-05" becomes "$1.23\times10^{-5}$".
+std::string latex_number(double value);
+
+/// Text for a Markdown table cell: '|' escaped.
+std::string markdown_cell(const std::string& text);
+
+/// The opening of a booktabs table: caption, label `tab:holebench-<label>`, the tabular's
+/// column spec, the header row and \midrule.
+std::string latex_table_begin(const std::string& caption, const std::string& label,
+                              const std::string& columns, const std::string& header);
+
+/// The closing of latex_table_begin's table.
+std::string latex_table_end();
+
+/// A label part from a name: '_' becomes '-'.
+std::string latex_label(std::string name);
+
 }  // namespace holebench::harness::report

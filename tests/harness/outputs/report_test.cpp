@@ -18,6 +18,8 @@
 // classification 0.5, 1, 1: median 1.
 #include "harness/outputs/report/report.h"
 
+#include "tests/harness/text_file.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -33,12 +35,7 @@ namespace {
 const std::filesystem::path kFixture = std::filesystem::path(HOLEBENCH_SOURCE_DIR) / "tests" /
                                        "harness" / "fixtures" / "report_results.json";
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test_support::read_text;
 
 std::filesystem::path fresh_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / name;
@@ -112,8 +109,8 @@ TEST(Report, WritesEveryFileWithTheRightNumbers) {
   const auto summary = write_report(data, dir, no_plots());
   const auto report = dir / "report";
   EXPECT_EQ(summary.dir, report);
-  for (const char* file :
-       {"summary.md", "summary.csv", "tables.tex", "report.html", "plots/plot_data.json"}) {
+  for (const char* file : {"leaderboard.md", "leaderboard.tex", "summary.md", "summary.csv",
+                           "tables.tex", "report.html", "plots/plot_data.json"}) {
     EXPECT_TRUE(std::filesystem::exists(report / file)) << file;
   }
   EXPECT_FALSE(summary.plots_written);
@@ -211,7 +208,7 @@ TEST(Report, SameResultsGiveTheSameBytes) {
     EXPECT_EQ(a, read_text(second.dir / file)) << file;
   }
   if (first.plots_written) {
-    EXPECT_EQ(first.files.size(), 8u);
+    EXPECT_EQ(first.files.size(), 10u);  // 2 leaderboard, 3 summary, HTML, plot data, 3 PNG
     EXPECT_NE(read_text(first.dir / "report.html").find("src=\"plots/error_vs_noise.png\""),
               std::string::npos);
   }
