@@ -27,7 +27,7 @@ TEST(PointSegmentDistance, InsideTheSlabAndPastTheEnds) {
   EXPECT_DOUBLE_EQ(point_segment_distance(Point(2, 4, 5), a, b), 5.0);   // 3-4-5 across
   EXPECT_DOUBLE_EQ(point_segment_distance(Point(-2, 5, 1), a, b), 5.0);  // past a
   EXPECT_DOUBLE_EQ(point_segment_distance(Point(7, 1, 5), a, b), 5.0);   // past b
-  EXPECT_DOUBLE_EQ(point_segment_distance(Point(4, 4, 5), a, a), 5.0);   // a point
+  EXPECT_DOUBLE_EQ(point_segment_distance(Point(4, 5, 1), a, a), 5.0);   // a point
   EXPECT_DOUBLE_EQ(distance_to_line(Point(-2, 4, 5), a, b), 5.0);        // the line goes on
 }
 
