@@ -39,6 +39,13 @@ double loop_length(const Mesh& mesh, const BoundaryLoop& loop) {
   return length;
 }
 
+std::vector<Point> loop_points(const Mesh& mesh, const BoundaryLoop& loop) {
+  std::vector<Point> points;
+  for (auto v : loop_vertices(mesh, loop))
+    points.push_back(mesh.point(v));
+  return points;
+}
+
 Point loop_centroid(const Mesh& mesh, const BoundaryLoop& loop) {
   Point sum(0.0, 0.0, 0.0);
   for (auto h : loop.halfedges)

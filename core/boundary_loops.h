@@ -24,6 +24,9 @@ std::vector<BoundaryLoop> find_boundary_loops(const Mesh& mesh);
 /// The vertices of a loop, in loop order (the `from` vertex of each halfedge).
 std::vector<VertexHandle> loop_vertices(const Mesh& mesh, const BoundaryLoop& loop);
 
+/// The positions of the loop's vertices, in loop order.
+std::vector<Point> loop_points(const Mesh& mesh, const BoundaryLoop& loop);
+
 /// The total length of the loop's edges.
 double loop_length(const Mesh& mesh, const BoundaryLoop& loop);
 

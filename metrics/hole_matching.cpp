@@ -1,7 +1,7 @@
 #include "metrics/hole_matching.h"
 
-#include "core/distances.h"
 #include "core/boundary_loops.h"
+#include "core/distances.h"
 #include "metrics/embree/triangle_scene.h"
 
 #include <limits>

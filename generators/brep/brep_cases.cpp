@@ -145,13 +145,6 @@ double diameter(const std::vector<Point>& points) {
   return d;
 }
 
-std::vector<Point> loop_points(const Mesh& mesh, const BoundaryLoop& loop) {
-  std::vector<Point> points;
-  for (auto v : loop_vertices(mesh, loop))
-    points.push_back(mesh.point(v));
-  return points;
-}
-
 // The complete mesh's sharp edges (between two regions) whose faces are both removed,
 // chained into polylines.
 std::vector<std::vector<Point>> missing_sharp_edges(const Mesh& complete,

@@ -30,16 +30,16 @@ constexpr const char* kNewellProjection = "sub_hole_newell_projection";
 constexpr const char* kLeastSquaresProjection = "sub_hole_least_squares_projection";
 constexpr const char* kPolylineTriangulation = "sub_hole_cgal_triangulate_hole_polyline";
 
-Point node_point(const Mesh& mesh, const HolePartition& partition, Node node) {
-  return node >= 0 ? mesh.point(mesh.vertex_handle(node))
-                   : partition.new_points[new_point_index(node)];
+// A node's position: a mesh vertex's, or one of `new_points` (new_point_node numbering).
+Point node_point(const Mesh& mesh, const std::vector<Point>& new_points, Node node) {
+  return node >= 0 ? mesh.point(mesh.vertex_handle(node)) : new_points[new_point_index(node)];
 }
 
-std::vector<Point> node_points(const Mesh& mesh, const HolePartition& partition,
+std::vector<Point> node_points(const Mesh& mesh, const std::vector<Point>& new_points,
                                const std::vector<Node>& nodes) {
   std::vector<Point> points;
   for (Node node : nodes)
-    points.push_back(node_point(mesh, partition, node));
+    points.push_back(node_point(mesh, new_points, node));
   return points;
 }
 
@@ -72,9 +72,10 @@ std::string sub_hole_fallback(const std::vector<SubHoleFilling>& sub_holes) {
 std::vector<int> place_islands(const Mesh& mesh, const HolePartition& partition) {
   std::vector<int> placed(partition.islands.size(), -1);
   for (std::size_t k = 0; k < partition.islands.size(); ++k) {
-    const std::vector<Point> island = node_points(mesh, partition, partition.islands[k]);
+    const std::vector<Point> island = node_points(mesh, partition.new_points, partition.islands[k]);
     for (std::size_t i = 0; i < partition.sub_holes.size() && placed[k] < 0; ++i) {
-      const std::vector<Point> boundary = node_points(mesh, partition, partition.sub_holes[i]);
+      const std::vector<Point> boundary =
+          node_points(mesh, partition.new_points, partition.sub_holes[i]);
       Point normal = projection_normal(mesh, partition.sub_holes[i]);
       if (normal.norm() < 1e-12)
         normal = newell_normal(boundary);
@@ -90,9 +91,7 @@ std::vector<int> place_islands(const Mesh& mesh, const HolePartition& partition)
 
 std::size_t split_chords_the_mesh_has(const Mesh& mesh, std::vector<std::array<Node, 3>>& triangles,
                                       std::vector<Point>& new_points) {
-  auto point = [&](Node node) {
-    return node >= 0 ? mesh.point(mesh.vertex_handle(node)) : new_points[new_point_index(node)];
-  };
+  auto point = [&](Node node) { return node_point(mesh, new_points, node); };
   // The halfedge a -> b of a triangle can be stitched only where the mesh has no such edge
   // or has it as a boundary halfedge (an edge of the hole's own loop).
   auto taken = [&](Node a, Node b) {
@@ -139,14 +138,9 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
     return result;
   }
   std::vector<Point> new_points = partition.new_points;  // grows by the chords' points
-  auto point = [&](Node node) {
-    return node >= 0 ? mesh.point(mesh.vertex_handle(node)) : new_points[new_point_index(node)];
-  };
+  auto point = [&](Node node) { return node_point(mesh, new_points, node); };
   auto points_of = [&](const std::vector<Node>& nodes) {
-    std::vector<Point> points;
-    for (Node node : nodes)
-      points.push_back(point(node));
-    return points;
+    return node_points(mesh, new_points, nodes);
   };
   // The CDT of a loop (and inner loops) projected on the plane with `normal` through the
   // loop's centroid; indices count the loop's nodes, then the inner loops'.

@@ -8,16 +8,6 @@
 #include <limits>
 
 namespace holebench::crest_feature {
-namespace {
-
-std::vector<Point> loop_points(const Mesh& mesh, const BoundaryLoop& loop) {
-  std::vector<Point> points;
-  for (auto v : loop_vertices(mesh, loop))
-    points.push_back(mesh.point(v));
-  return points;
-}
-
-}  // namespace
 
 Point loop_face_normal_sum(const Mesh& mesh, const BoundaryLoop& loop) {
   Point n(0, 0, 0);
@@ -36,7 +26,9 @@ bool is_island_of(const Mesh& mesh, const BoundaryLoop& inner, const BoundaryLoo
   const std::vector<Point> inner_points = loop_points(mesh, inner);
   const double outer_turn = OpenMesh::dot(newell_normal(outer_points), n);
   const double inner_turn = OpenMesh::dot(newell_normal(inner_points), n);
-  if (!(outer_turn * inner_turn < 0.0))
+  // A hole's loop runs counter-clockwise about the normals of the faces around it, an
+  // island's (and an open sheet's border) clockwise.
+  if (!(outer_turn > 0.0 && inner_turn < 0.0))
     return false;
   const Point centroid = loop_centroid(mesh, outer);
   double diameter = 0.0;

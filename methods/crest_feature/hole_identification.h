@@ -34,9 +34,10 @@ Point loop_face_normal_sum(const Mesh& mesh, const BoundaryLoop& loop);
 
 /// Whether the loop `inner` bounds an island of the hole bounded by `outer`: seen along the
 /// normal sum of `outer`'s faces, every point of `inner` lies inside `outer`, `inner`'s
-/// faces face the same side, and `inner` runs the other way round (the surface lies outside
-/// a hole's loop and inside an island's). `inner` must also lie within `outer`'s diameter of
-/// `outer`'s centroid along that normal, so that a hole on a parallel face is not taken.
+/// faces face the same side, `outer` runs as a hole's loop and `inner` the other way round (the
+/// surface lies outside a hole's loop and inside an island's or an open sheet's border). `inner`
+/// must also lie within `outer`'s diameter of `outer`'s centroid along that normal, so that a hole
+/// on a parallel face is not taken.
 bool is_island_of(const Mesh& mesh, const BoundaryLoop& inner, const BoundaryLoop& outer);
 
 /// Every hole of `mesh`, in the order of find_boundary_loops (islands attached to the

@@ -52,8 +52,29 @@ TEST(CrestFeatureIslands, IslandLoopIsAttachedToTheHoleAroundIt) {
   }
 }
 
-// Two holes side by side, and holes on opposite faces of a box, are no islands of each other.
+// Two holes side by side in an open sheet are no islands of each other nor of the sheet's
+// border (which runs the island's way round and contains both); on the box cases, a hole is
+// no island either.
 TEST(CrestFeatureIslands, SeparateHolesAreNoIslands) {
+  TriangleSoup soup = test::grid_soup(8);
+  std::vector<std::array<int, 3>> kept;
+  for (const auto& t : soup.triangles) {
+    Point c(0, 0, 0);
+    for (int v : t)
+      c += soup.points[v];
+    c /= 3.0;
+    const bool in_first = c[0] > 1 && c[0] < 3 && c[1] > 1 && c[1] < 3;
+    const bool in_second = c[0] > 5 && c[0] < 7 && c[1] > 5 && c[1] < 7;
+    if (!in_first && !in_second)
+      kept.push_back(t);
+  }
+  soup.triangles = kept;
+  const Mesh sheet = build_mesh(soup);
+  ASSERT_EQ(find_boundary_loops(sheet).size(), 3u);
+  const auto holes = identify_holes(sheet);
+  EXPECT_EQ(holes.size(), 3u);
+  for (const auto& hole : holes)
+    EXPECT_TRUE(hole.islands.empty());
   for (const std::string id : {"box/face_interior", "box/edge", "box/corner"}) {
     const Case c = generators::make_case(id);
     for (const auto& hole : identify_holes(c.input))
