@@ -3,6 +3,9 @@
 #include "core/region_segmentation.h"
 
 #include <cmath>
+#include <functional>
+#include <map>
+#include <set>
 
 namespace holebench::slice_loft {
 namespace {
@@ -59,7 +62,66 @@ std::vector<int> segment_mesh_regions(const Mesh& mesh,
   SegmentationOptions segmentation;
   segmentation.sharp_angle_degrees =
       std::min(options.min_threshold_degrees, 360.0 - options.max_threshold_degrees);
-  return segment_regions(mesh, segmentation).face_region;
+  std::vector<int> face_region = segment_regions(mesh, segmentation).face_region;
+  merge_small_regions(mesh, options.min_region_faces, face_region);
+  return face_region;
+}
+
+void merge_small_regions(const Mesh& mesh, int min_faces, std::vector<int>& face_region) {
+  if (min_faces <= 1)
+    return;
+  // Smallest first: each small region joins the neighbour it shares the most edges with.
+  // Regions are merged through a union-find over region ids.
+  std::map<int, std::vector<int>> faces_of;
+  for (std::size_t f = 0; f < face_region.size(); ++f)
+    faces_of[face_region[f]].push_back(static_cast<int>(f));
+  std::map<int, int> parent;
+  std::function<int(int)> root = [&](int r) {
+    auto it = parent.find(r);
+    if (it == parent.end())
+      return r;
+    return it->second = root(it->second);
+  };
+  std::set<std::pair<std::size_t, int>> queue;  // (size, region)
+  for (const auto& [r, faces] : faces_of) {
+    if (static_cast<int>(faces.size()) < min_faces)
+      queue.insert({faces.size(), r});
+  }
+  while (!queue.empty()) {
+    const int r = queue.begin()->second;
+    queue.erase(queue.begin());
+    std::map<int, int> shared;
+    for (int f : faces_of[r]) {
+      for (auto h : mesh.fh_range(FaceHandle(f))) {
+        const auto g = h.opp().face();
+        if (!g.is_valid())
+          continue;
+        const int other = root(face_region[g.idx()]);
+        if (other != r)
+          ++shared[other];
+      }
+    }
+    int target = -1, most = 0;
+    for (auto [other, n] : shared) {
+      if (n > most) {
+        target = other;
+        most = n;
+      }
+    }
+    if (target < 0)
+      continue;  // an isolated component: nothing to join
+    auto& into = faces_of[target];
+    const bool was_small = static_cast<int>(into.size()) < min_faces;
+    if (was_small)
+      queue.erase({into.size(), target});
+    into.insert(into.end(), faces_of[r].begin(), faces_of[r].end());
+    faces_of.erase(r);
+    parent[r] = target;
+    if (static_cast<int>(into.size()) < min_faces)
+      queue.insert({into.size(), target});
+  }
+  for (int& r : face_region)
+    r = root(r);
 }
 
 void segment_hole_boundary(const Mesh& mesh, const std::vector<int>& face_region, Hole& hole,

@@ -16,6 +16,9 @@ struct BoundarySegmentationOptions {
   double max_threshold_degrees = 330.0;
   /// Runs of fewer boundary edges are merged into their neighbour (noise guard).
   int min_segment_edges = 2;
+  /// Regions of fewer faces join the neighbour they share the most edges with (noise
+  /// guard: under vertex noise single faces exceed the thresholds on every side).
+  int min_region_faces = 4;
 };
 
 /// True if the edge is a region boundary by the thresholds.
@@ -24,6 +27,10 @@ bool is_region_boundary_edge(const Mesh& mesh, OpenMesh::EdgeHandle e,
 
 /// Region id per face index, regions grown across edges that are not region boundaries.
 std::vector<int> segment_mesh_regions(const Mesh& mesh, const BoundarySegmentationOptions& options);
+
+/// Merges every region of fewer than `min_faces` faces into the neighbouring region it
+/// shares the most edges with, smallest first.
+void merge_small_regions(const Mesh& mesh, int min_faces, std::vector<int>& face_region);
 
 /// Fills hole.segments and hole.type from the regions of the faces along the boundary.
 void segment_hole_boundary(const Mesh& mesh, const std::vector<int>& face_region, Hole& hole,

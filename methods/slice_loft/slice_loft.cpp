@@ -1,7 +1,9 @@
 #include "methods/slice_loft/slice_loft.h"
 
 #include "core/stopwatch.h"
+#include "methods/slice_loft/pinched_portions.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -41,9 +43,22 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
                  bool use_regions, std::string& remark) {
   auto start = Clock::now();
   std::vector<Portion> portions = hole_portions(holed, found.contours, hole, features, face_region);
-  if (!use_regions) {
-    for (auto& portion : portions)
+  // The hole's and islands' boundary, and the missing-feature points that lie on it.
+  std::vector<HalfedgeHandle> boundary = hole.boundary;
+  std::vector<VertexHandle> boundary_vertices = found.contours[hole.contour].vertices;
+  for (int island : hole.islands) {
+    const Contour& contour = found.contours[island];
+    boundary.insert(boundary.end(), contour.loop.halfedges.begin(), contour.loop.halfedges.end());
+    boundary_vertices.insert(boundary_vertices.end(), contour.vertices.begin(),
+                             contour.vertices.end());
+  }
+  const std::vector<VertexHandle> on_boundary =
+      feature_points_on_boundary(holed, boundary_vertices, features,
+                                 options.tessellation.feature_snap_edges * hole.mean_edge_length);
+  for (auto& portion : portions) {
+    if (!use_regions)
       portion.region = kNoRegion;
+    snap_feature_nodes(holed, on_boundary, portion.boundary);
   }
   std::vector<LoftedPatch> patches;
   for (const auto& portion : portions) {
@@ -55,23 +70,52 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
   }
   clock.surface += seconds_since(start);
   start = Clock::now();
+  // Each portion trimmed on its own patch, split where its boundary is pinched.
+  std::vector<Portion> pieces;
   std::vector<PatchTessellation> tessellations;
   for (std::size_t p = 0; p < portions.size(); ++p) {
-    tessellations.push_back(tessellate_trimmed_patch(portions[p], patches[p], hole.mean_edge_length,
-                                                     options.tessellation));
-    if (!tessellations.back().ok) {
-      clock.sewing += seconds_since(start);
-      return "trimming: " + tessellations.back().error;
+    for (Portion& piece : split_pinched_portion(portions[p], patches[p])) {
+      tessellations.push_back(tessellate_trimmed_patch(
+          holed, piece, patches[p], hole.mean_edge_length, options.tessellation));
+      pieces.push_back(std::move(piece));
+      if (!tessellations.back().ok) {
+        clock.sewing += seconds_since(start);
+        return "trimming: " + tessellations.back().error;
+      }
     }
   }
-  std::size_t on_surface = 0;
-  for (const auto& t : tessellations)
+  std::size_t on_surface = 0, on_disc = 0, chords = 0;
+  for (const auto& t : tessellations) {
     on_surface += t.domain == TrimmingDomain::Surface ? 1 : 0;
-  if (on_surface > 0) {
-    remark = std::to_string(on_surface) + " of " + std::to_string(portions.size()) +
-             " portion(s) trimmed on the surface (the boundary folds in the portion's plane)";
+    on_disc += t.domain == TrimmingDomain::DevelopedDisc ? 1 : 0;
+    chords += t.chords_split;
   }
-  sewn = sew_patches(mesh, portions, tessellations, features);
+  std::vector<std::string> remarks;
+  const auto snapped = std::count_if(on_boundary.begin(), on_boundary.end(),
+                                     [](VertexHandle v) { return v.is_valid(); });
+  if (snapped > 0) {
+    remarks.push_back(std::to_string(snapped) +
+                      " missing-feature point(s) on the boundary (the edge runs along it)");
+  }
+  if (pieces.size() != portions.size()) {
+    remarks.push_back("pinched boundary: " + std::to_string(portions.size()) +
+                      " portion(s) trimmed as " + std::to_string(pieces.size()) + " loops");
+  }
+  if (on_surface > 0) {
+    remarks.push_back(
+        std::to_string(on_surface) + " of " + std::to_string(pieces.size()) +
+        " loop(s) trimmed on the surface (the boundary folds in the portion's plane)");
+  }
+  if (on_disc > 0) {
+    remarks.push_back(std::to_string(on_disc) + " of " + std::to_string(pieces.size()) +
+                      " loop(s) trimmed on the developed disc (the boundary folds on the "
+                      "surface too)");
+  }
+  if (chords > 0)
+    remarks.push_back("chords split " + std::to_string(chords));
+  for (const auto& r : remarks)
+    remark += (remark.empty() ? "" : "; ") + r;
+  sewn = sew_patches(mesh, pieces, tessellations, features, boundary);
   clock.sewing += seconds_since(start);
   return sewn.ok ? std::string() : "sewing: " + sewn.error;
 }

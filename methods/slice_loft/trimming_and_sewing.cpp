@@ -3,8 +3,13 @@
 #include "methods/slice_loft/trimming_and_sewing.h"
 
 #include "methods/common/planar_polygon_triangulation.h"
+#include "methods/slice_loft/developed_disc.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
 #include <unordered_map>
 
 namespace holebench::slice_loft {
@@ -47,32 +52,185 @@ double signed_area(const std::vector<Vec2>& loop) {
 
 namespace {
 
-PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,
-                                const LoftedPatch& patch, double edge_length,
-                                const TessellationOptions& options) {
-  PatchTessellation result;
-  result.domain = domain;
-  // The parameters of a point near the surface in the chosen domain, and the surface point
-  // of a parameter pair (section 4.5: trimming in the parameter domain).
+// The boundary nodes in the order the triangulation numbers them: the portion's boundary,
+// then its islands'.
+std::vector<const BoundaryNode*> numbered_nodes(const Portion& portion) {
+  std::vector<const BoundaryNode*> nodes;
+  for (const auto& node : portion.boundary)
+    nodes.push_back(&node);
+  for (const auto& island : portion.islands) {
+    for (const auto& node : island)
+      nodes.push_back(&node);
+  }
+  return nodes;
+}
+
+// The triangles' edges that must not become mesh edges as they are, each once: between
+// two boundary vertices that the mesh already joins by an edge other than a boundary edge
+// of the loops (a facet there would give that edge a third face); and, on the developed
+// disc, where a node stands at two points (the two sides of a bridge to an island), an
+// edge between two points of the same node, and every edge other than the loops' own
+// between two points that three or more triangles join (it would be non-manifold).
+// `nodes[k]` is the node of loop point k; points from nodes.size() on are interior points.
+std::vector<std::array<int, 2>> chords_to_split(const Mesh& mesh,
+                                                const std::vector<const BoundaryNode*>& nodes,
+                                                const std::set<std::array<int, 2>>& loop_edges,
+                                                const std::vector<std::array<int, 3>>& triangles) {
+  const int n = static_cast<int>(nodes.size());
+  // What a point becomes in the mesh: its node, or itself for an interior point.
+  auto identity = [&](int k) {
+    return k < n ? reinterpret_cast<std::uintptr_t>(nodes[k]) : static_cast<std::uintptr_t>(k);
+  };
+  auto identity_pair = [&](int a, int b) {
+    const std::uintptr_t x = identity(a), y = identity(b);
+    return std::make_pair(std::min(x, y), std::max(x, y));
+  };
+  std::map<std::pair<std::uintptr_t, std::uintptr_t>, int> uses;
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k)
+      ++uses[identity_pair(t[k], t[(k + 1) % 3])];
+  }
+  std::vector<std::array<int, 2>> chords;
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
+      if (loop_edges.count({a, b}))
+        continue;
+      bool split = identity(a) == identity(b) || uses[identity_pair(a, b)] > 2;
+      if (!split && b < n && nodes[a]->vertex.is_valid() && nodes[b]->vertex.is_valid()) {
+        const HalfedgeHandle h = mesh.find_halfedge(nodes[a]->vertex, nodes[b]->vertex);
+        split = h.is_valid() && !mesh.is_boundary(h) &&
+                !mesh.is_boundary(mesh.opposite_halfedge_handle(h));
+      }
+      const std::array<int, 2> chord{a, b};
+      if (split && std::find(chords.begin(), chords.end(), chord) == chords.end())
+        chords.push_back(chord);
+    }
+  }
+  return chords;
+}
+
+// The loops a patch is trimmed by, in one domain: 2D points, and for each the index of its
+// node in numbered_nodes order (the developed disc visits some nodes twice).
+struct TrimmingPolygon {
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<int> node_index;  ///< per point, loops in order
+  /// Developed disc only: the surface parameters (u, s) of each point of loops[0].
+  std::vector<Vec2> surface_parameters;
+};
+
+// The portion's plane (u, w) or the surface's (u, s): each boundary and island node at its
+// parameters.
+TrimmingPolygon polygon_by_parameters(TrimmingDomain domain, const Portion& portion,
+                                      const LoftedPatch& patch) {
   auto parameters = [&](const Point& p) {
     if (domain == TrimmingDomain::PortionPlane)
       return Vec2{patch.u_of(p), patch.w_of(p)};
     const auto [u, s] = patch.parameters(p);
     return Vec2{u, s};
   };
-  auto surface_point = [&](Vec2 q) {
-    return domain == TrimmingDomain::PortionPlane ? patch.point_over_plane(q.x, q.y)
-                                                  : patch.evaluate(q.x, q.y);
-  };
-  std::vector<std::vector<Vec2>> loops(1);
-  for (const auto& node : portion.boundary)
-    loops[0].push_back(parameters(node.position));
-  for (const auto& island : portion.islands) {
-    loops.emplace_back();
-    for (const auto& node : island)
-      loops.back().push_back(parameters(node.position));
+  TrimmingPolygon polygon;
+  int index = 0;
+  polygon.loops.emplace_back();
+  for (const auto& node : portion.boundary) {
+    polygon.loops[0].push_back(parameters(node.position));
+    polygon.node_index.push_back(index++);
   }
-  const double spacing = options.spacing_edges * edge_length;
+  for (const auto& island : portion.islands) {
+    polygon.loops.emplace_back();
+    for (const auto& node : island) {
+      polygon.loops.back().push_back(parameters(node.position));
+      polygon.node_index.push_back(index++);
+    }
+  }
+  return polygon;
+}
+
+// The developed disc: one loop, each island joined to the boundary by a bridge (a slit
+// from the island's node nearest the loop so far, round the island in its own direction and
+// back), developed onto the circle by arc length.
+TrimmingPolygon polygon_on_disc(const Portion& portion, const LoftedPatch& patch,
+                                double& spacing_scale) {
+  const std::vector<const BoundaryNode*> nodes = numbered_nodes(portion);
+  std::vector<int> loop;
+  for (std::size_t i = 0; i < portion.boundary.size(); ++i)
+    loop.push_back(static_cast<int>(i));
+  int first = static_cast<int>(portion.boundary.size());
+  for (const auto& island : portion.islands) {
+    const int n = static_cast<int>(island.size());
+    std::size_t at = 0;
+    int from = 0;
+    double best = 1e300;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      for (int i = 0; i < n; ++i) {
+        const double d = (nodes[loop[k]]->position - island[i].position).norm();
+        if (d < best) {
+          best = d;
+          at = k;
+          from = i;
+        }
+      }
+    }
+    std::vector<int> detour;
+    for (int i = 0; i <= n; ++i)
+      detour.push_back(first + (from + i) % n);
+    detour.push_back(loop[at]);
+    loop.insert(loop.begin() + static_cast<long>(at) + 1, detour.begin(), detour.end());
+    first += n;
+  }
+  std::vector<Point> points;
+  TrimmingPolygon polygon;
+  for (int index : loop) {
+    points.push_back(nodes[index]->position);
+    const auto [u, s] = patch.parameters(nodes[index]->position);
+    polygon.surface_parameters.push_back({u, s});
+  }
+  const DevelopedDisc disc = develop_onto_disc(points);
+  polygon.loops.emplace_back();
+  for (const auto& q : disc.points)
+    polygon.loops[0].push_back({q[0], q[1]});
+  polygon.node_index = loop;
+  spacing_scale = disc.spacing_scale;
+  return polygon;
+}
+
+PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const Portion& portion,
+                                const LoftedPatch& patch, double edge_length,
+                                const TessellationOptions& options) {
+  PatchTessellation result;
+  result.domain = domain;
+  if (options.direct && domain == TrimmingDomain::DevelopedDisc) {
+    result.failure = TriangulationFailure::SelfIntersection;
+    result.error = "the section points cannot be placed on the developed disc";
+    return result;
+  }
+  // The loops in the chosen domain (section 4.5: trimming in the parameter domain), and the
+  // surface point of a point of the domain.
+  double spacing_scale = 1.0;
+  const TrimmingPolygon polygon = domain == TrimmingDomain::DevelopedDisc
+                                      ? polygon_on_disc(portion, patch, spacing_scale)
+                                      : polygon_by_parameters(domain, portion, patch);
+  const auto& loops = polygon.loops;
+  std::vector<std::array<double, 2>> disc_points;
+  if (domain == TrimmingDomain::DevelopedDisc) {
+    for (const Vec2& p : loops[0])
+      disc_points.push_back({p.x, p.y});
+  }
+  auto surface_point = [&](Vec2 q) {
+    if (domain == TrimmingDomain::PortionPlane)
+      return patch.point_over_plane(q.x, q.y);
+    if (domain == TrimmingDomain::Surface)
+      return patch.evaluate(q.x, q.y);
+    // The disc: the boundary's surface parameters interpolated by mean value coordinates.
+    const std::vector<double> weights = mean_value_coordinates(disc_points, {q.x, q.y});
+    double u = 0.0, s = 0.0;
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+      u += weights[i] * polygon.surface_parameters[i].x;
+      s += weights[i] * polygon.surface_parameters[i].y;
+    }
+    return patch.evaluate(u, s);
+  };
+  const double spacing = options.spacing_edges * edge_length * spacing_scale;
   const double clearance = options.clearance * spacing;
   auto admissible = [&](Vec2 p) {
     if (!inside(loops[0], p))
@@ -93,7 +251,10 @@ PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,
   if (options.direct) {
     for (const auto& section : patch.sections) {
       for (const Point& p : section.traced) {
-        const Vec2 q = parameters(p);
+        const auto [u, s] = domain == TrimmingDomain::PortionPlane
+                                ? std::array<double, 2>{patch.u_of(p), patch.w_of(p)}
+                                : patch.parameters(p);
+        const Vec2 q{u, s};
         if (!admissible(q))
           continue;
         bool crowded = false;
@@ -127,15 +288,55 @@ PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,
 
   // Faceting: constrained Delaunay triangulation with the boundary edges as constraints.
   std::vector<std::vector<std::array<double, 2>>> loops_2d;
+  std::vector<std::array<double, 2>> all_points;
   for (const auto& loop : loops) {
     loops_2d.emplace_back();
-    for (const Vec2& p : loop)
+    for (const Vec2& p : loop) {
       loops_2d.back().push_back({p.x, p.y});
+      all_points.push_back({p.x, p.y});
+    }
   }
   std::vector<std::array<double, 2>> interior_points;
   for (const Vec2& p : interior_2d)
     interior_points.push_back({p.x, p.y});
-  const PolygonTriangulation2d facets = triangulate_polygon_2d(loops_2d, interior_points);
+  PolygonTriangulation2d facets = triangulate_polygon_2d(loops_2d, interior_points);
+  // Chords the mesh already has get a point at their middle (a Steiner point on the
+  // surface), and the patch is triangulated again.
+  const std::vector<const BoundaryNode*> numbered = numbered_nodes(portion);
+  std::vector<const BoundaryNode*> nodes;  // per polygon point
+  for (int index : polygon.node_index)
+    nodes.push_back(numbered[index]);
+  std::set<std::array<int, 2>> loop_edges;  // point pairs of the loops' own edges
+  for (std::size_t l = 0, first = 0; l < loops.size(); first += loops[l].size(), ++l) {
+    const int size = static_cast<int>(loops[l].size());
+    for (int i = 0; i < size; ++i) {
+      const int a = static_cast<int>(first) + i, b = static_cast<int>(first) + (i + 1) % size;
+      loop_edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  }
+  for (int round = 0; facets.ok() && round < options.max_chord_splits; ++round) {
+    const auto chords = chords_to_split(mesh, nodes, loop_edges, facets.triangles);
+    if (chords.empty())
+      break;
+    // The points as the triangulation numbers them: the loops', then the kept interior.
+    std::vector<std::array<double, 2>> point_2d = all_points;
+    std::vector<Point> point_3d;
+    for (const auto* node : nodes)
+      point_3d.push_back(node->position);
+    for (int i : facets.kept_interior) {
+      point_2d.push_back(interior_points[i]);
+      point_3d.push_back(result.interior[i]);
+    }
+    for (const auto& [a, b] : chords) {
+      const Vec2 middle{0.5 * (point_2d[a][0] + point_2d[b][0]),
+                        0.5 * (point_2d[a][1] + point_2d[b][1])};
+      interior_points.push_back({middle.x, middle.y});
+      result.interior.push_back(options.direct ? (point_3d[a] + point_3d[b]) * 0.5
+                                               : surface_point(middle));
+      ++result.chords_split;
+    }
+    facets = triangulate_polygon_2d(loops_2d, interior_points);
+  }
   result.failure = facets.failure;
   switch (facets.failure) {
     case TriangulationFailure::None:
@@ -159,11 +360,17 @@ PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,
   for (int i : facets.kept_interior)
     kept.push_back(result.interior[i]);
   result.interior = std::move(kept);
+  // Triangle indices in numbered_nodes order, then the interior points.
+  const int polygon_points = static_cast<int>(all_points.size());
+  const int node_count = static_cast<int>(numbered.size());
+  auto renumber = [&](int k) {
+    return k < polygon_points ? polygon.node_index[k] : k - polygon_points + node_count;
+  };
   const bool flip = signed_area(loops[0]) < 0.0;
   for (auto tri : facets.triangles) {
     if (flip)
       std::swap(tri[1], tri[2]);
-    result.triangles.push_back(tri);
+    result.triangles.push_back({renumber(tri[0]), renumber(tri[1]), renumber(tri[2])});
   }
   result.ok = true;
   return result;
@@ -171,26 +378,34 @@ PatchTessellation tessellate_in(TrimmingDomain domain, const Portion& portion,
 
 }  // namespace
 
-PatchTessellation tessellate_trimmed_patch(const Portion& portion, const LoftedPatch& patch,
-                                           double edge_length, const TessellationOptions& options) {
+PatchTessellation tessellate_trimmed_patch(const Mesh& mesh, const Portion& portion,
+                                           const LoftedPatch& patch, double edge_length,
+                                           const TessellationOptions& options) {
   // The portion's plane first: exact for the planar portions most holes consist of. Where the
   // boundary folds over in that plane, on the surface itself.
   PatchTessellation in_plane =
-      tessellate_in(TrimmingDomain::PortionPlane, portion, patch, edge_length, options);
+      tessellate_in(mesh, TrimmingDomain::PortionPlane, portion, patch, edge_length, options);
   if (in_plane.ok || in_plane.failure == TriangulationFailure::ShortLoop)
     return in_plane;
   PatchTessellation on_surface =
-      tessellate_in(TrimmingDomain::Surface, portion, patch, edge_length, options);
-  if (on_surface.ok)
+      tessellate_in(mesh, TrimmingDomain::Surface, portion, patch, edge_length, options);
+  if (on_surface.ok || !options.developed_disc)
     return on_surface;
-  on_surface.error = in_plane.error + "; on the surface too: " + on_surface.error;
-  return on_surface;
+  PatchTessellation on_disc =
+      tessellate_in(mesh, TrimmingDomain::DevelopedDisc, portion, patch, edge_length, options);
+  if (on_disc.ok)
+    return on_disc;
+  on_disc.error = in_plane.error + "; on the surface too: " + on_surface.error +
+                  "; on the developed disc too: " + on_disc.error;
+  return on_disc;
 }
 
 SewingResult sew_patches(Mesh& mesh, const std::vector<Portion>& portions,
                          const std::vector<PatchTessellation>& tessellations,
-                         const MissingFeatures& features) {
+                         const MissingFeatures& features,
+                         const std::vector<HalfedgeHandle>& hole_boundary) {
   SewingResult result;
+  std::vector<VertexHandle> new_vertices;
   const Mesh backup = mesh;
   std::unordered_map<int, VertexHandle> feature_vertex;
   for (std::size_t p = 0; p < portions.size(); ++p) {
@@ -205,6 +420,7 @@ SewingResult sew_patches(Mesh& mesh, const std::vector<Portion>& portions,
       auto [it, inserted] = feature_vertex.try_emplace(node.feature);
       if (inserted) {
         it->second = mesh.add_vertex(features.points[node.feature]);
+        new_vertices.push_back(it->second);
         ++result.new_vertices;
       }
       handles.push_back(it->second);
@@ -216,8 +432,10 @@ SewingResult sew_patches(Mesh& mesh, const std::vector<Portion>& portions,
         add_node(node);
     }
     const std::size_t first_interior = handles.size();
-    for (const Point& q : facets.interior)
+    for (const Point& q : facets.interior) {
       handles.push_back(mesh.add_vertex(q));
+      new_vertices.push_back(handles.back());
+    }
     std::vector<char> used(handles.size(), 0);
     for (const auto& t : facets.triangles) {
       const FaceHandle f = mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
@@ -239,6 +457,20 @@ SewingResult sew_patches(Mesh& mesh, const std::vector<Portion>& portions,
       }
       ++result.new_vertices;
     }
+  }
+  // The patch closes the hole: no boundary edge of it is left, and no new vertex lies on a
+  // boundary (every missing-feature path is shared by two portions).
+  std::size_t open = 0;
+  for (auto h : hole_boundary)
+    open += mesh.is_boundary(h) ? 1 : 0;
+  for (auto v : new_vertices)
+    open += mesh.is_boundary(v) ? 1 : 0;
+  if (open > 0) {
+    mesh = backup;
+    result = SewingResult{};
+    result.error =
+        "the facets leave " + std::to_string(open) + " boundary edge(s) or point(s) open";
+    return result;
   }
   result.ok = true;
   return result;
