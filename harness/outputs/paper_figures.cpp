@@ -13,6 +13,7 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 namespace holebench::harness {
 namespace {
@@ -79,64 +80,137 @@ std::string cell(const std::vector<double>& values, const char* format = "{:.3e}
   return fmt::format(fmt::runtime(format), sum / values.size());
 }
 
-// Table 2: per CAD model and noise level, the mean over the model's small holes.
-std::vector<std::filesystem::path> table_2(const ResultsData& data, const FiguresOptions& options) {
+// The kind of hole a CAD case's target makes, as Table 2's breakdown names it.
+std::string target_kind(const std::string& target) {
+  if (target == "face_interior")
+    return "face";
+  if (target.rfind("edge_", 0) == 0)
+    return "edge";
+  if (target.rfind("corner_", 0) == 0 || target == "cone_apex")
+    return "corner";
+  if (target == "curved_face")
+    return "curved";
+  return target;  // island, multi_feature
+}
+
+// One row of Table 2: the means over the small holes on which every compared method left new
+// vertices (paired), so each column averages the same holes.
+struct Table2Row {
+  std::vector<double> input_triangles, new_triangles;
+  std::map<std::string, std::vector<double>> error;
+};
+
+// Table 2's rows keyed by `row_key(case id)` and noise level, from the records of the small
+// holes of the CAD models.
+template <typename RowKey>
+std::map<std::pair<std::string, double>, Table2Row> table_2_rows(const ResultsData& data,
+                                                                 RowKey row_key) {
   const auto& methods = kTable2Methods;
-  struct Row {
-    std::vector<double> input_triangles, new_triangles;
-    std::map<std::string, std::vector<double>> error;
+  struct Job {
+    std::map<std::string, const JobRecord*> by_method;
   };
-  std::map<std::pair<std::string, double>, Row> rows;
+  std::map<std::tuple<std::string, double, std::uint64_t, std::string>, Job> jobs;
   for (const auto& r : data.records) {
-    if (r.case_family != "cad" || r.job.user != "no_user")
+    const std::string& id = r.job.case_id;
+    if (r.case_family != "cad" || r.job.user != "no_user" || id.size() < 6 ||
+        id.compare(id.size() - 6, 6, "/small") != 0)
       continue;
-    const std::string model = r.job.case_id.substr(4, r.job.case_id.find('/', 4) - 4);
-    Row& row = rows[{model, r.job.noise_percent}];
-    bool found = false;
-    const double error = metric(r, "new_vertex_mean_error_rel_diag", found);
-    if (found && std::find(methods.begin(), methods.end(), r.job.method_id) != methods.end()) {
-      row.error[r.job.method_id].push_back(error);
-    }
-    if (r.job.method_id == "slice_loft") {
-      const double faces = metric(r, "new_faces_count", found);
-      if (found)
-        row.new_triangles.push_back(faces);
-      const double input = metric(r, "input_faces_count", found);
-      if (found)
-        row.input_triangles.push_back(input);
-    }
+    if (std::find(methods.begin(), methods.end(), r.job.method_id) == methods.end())
+      continue;
+    jobs[{id, r.job.noise_percent, r.job.seed, r.job.user}].by_method[r.job.method_id] = &r;
   }
+  std::map<std::pair<std::string, double>, Table2Row> rows;
+  for (const auto& [key, job] : jobs) {
+    std::map<std::string, double> error;
+    for (const auto& method : methods) {
+      const auto it = job.by_method.find(method);
+      bool found = false;
+      const double value = it == job.by_method.end()
+                               ? 0.0
+                               : metric(*it->second, "new_vertex_mean_error_rel_diag", found);
+      if (found)
+        error[method] = value;
+    }
+    if (error.size() != methods.size())
+      continue;  // not every method left new vertices: the hole is in no column
+    Table2Row& row = rows[{row_key(std::get<0>(key)), std::get<1>(key)}];
+    for (const auto& [method, value] : error)
+      row.error[method].push_back(value);
+    const JobRecord& loft = *job.by_method.at("slice_loft");
+    bool found = false;
+    const double faces = metric(loft, "new_faces_count", found);
+    if (found)
+      row.new_triangles.push_back(faces);
+    const double input = metric(loft, "input_faces_count", found);
+    if (found)
+      row.input_triangles.push_back(input);
+  }
+  return rows;
+}
+
+// Writes one Table 2 (markdown and LaTeX) whose first column is `what`.
+std::vector<std::filesystem::path> write_table_2(
+    const std::map<std::pair<std::string, double>, Table2Row>& rows, const std::string& what,
+    const std::filesystem::path& stem) {
+  const auto& methods = kTable2Methods;
   std::string md =
-      "| model | noise % | input triangles | new triangles (slice_loft) | slice_loft | "
-      "slice_direct | liepa_cgal |\n"
-      "|---|---:|---:|---:|---:|---:|---:|\n";
-  std::string tex =
-      "\\begin{tabular}{lrrrrrr}\n\\toprule\nmodel & noise \\% & input tri. & new tri. & "
-      "slice\\_loft & "
-      "slice\\_direct & liepa\\_cgal \\\\\n\\midrule\n";
+      fmt::format("| {} | noise % | holes | input triangles | new triangles (slice_loft) | {} |\n",
+                  what, fmt::join(methods, " | "));
+  md += "|---|---:|---:|---:|---:|";
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    md += "---:|";
+  md += "\n";
+  std::string tex = fmt::format(
+      "\\begin{{tabular}}{{lrrrr{}}}\n\\toprule\n{} & noise \\% & holes & "
+      "input tri. & new tri.",
+      std::string(methods.size(), 'r'), what);
+  for (const auto& method : methods)
+    tex += " & " + report::latex_escape(method);
+  tex += " \\\\\n\\midrule\n";
   for (const auto& [key, row] : rows) {
-    const std::vector<std::string> values = {
-        cell(row.input_triangles, "{:.0f}"), cell(row.new_triangles, "{:.0f}"),
-        cell(row.error.count("slice_loft") ? row.error.at("slice_loft") : std::vector<double>{}),
-        cell(row.error.count("slice_direct") ? row.error.at("slice_direct")
-                                             : std::vector<double>{}),
-        cell(row.error.count("liepa_cgal") ? row.error.at("liepa_cgal") : std::vector<double>{})};
+    std::vector<std::string> values = {fmt::format("{}", row.error.begin()->second.size()),
+                                       cell(row.input_triangles, "{:.0f}"),
+                                       cell(row.new_triangles, "{:.0f}")};
+    for (const auto& method : methods)
+      values.push_back(
+          cell(row.error.count(method) ? row.error.at(method) : std::vector<double>{}));
     md += fmt::format("| {} | {} | {} |\n", key.first, key.second, fmt::join(values, " | "));
     tex += fmt::format("{} & {} & {} \\\\\n", report::latex_escape(key.first), key.second,
                        fmt::join(values, " & "));
   }
   tex += "\\bottomrule\n\\end{tabular}\n";
   if (rows.empty())
-    md += "| (no CAD records in these results: run `holebench run --suite paper`) |||||||\n";
+    md +=
+        "| (no CAD records of every method in these results: run `holebench run --suite paper`) "
+        "|\n";
   const std::string note =
       "\nMean new-vertex error (mean distance of the new vertices from the complete model, "
-      "relative to its "
-      "bounding-box diagonal) over each model's small holes, as in Table 2 of the slice paper.\n";
-  const auto md_path = options.out_dir / "table2_slice_new_vertex_error.md";
-  const auto tex_path = options.out_dir / "table2_slice_new_vertex_error.tex";
+      "relative to its bounding-box diagonal) over the small holes on which every method in the "
+      "table left new vertices (`holes` of them: the columns average the same holes), as in "
+      "Table 2 of the slice paper.\n";
+  auto md_path = stem;
+  md_path += ".md";
+  auto tex_path = stem;
+  tex_path += ".tex";
   std::ofstream(md_path) << md << note;
   std::ofstream(tex_path) << tex;
   return {md_path, tex_path};
+}
+
+// Table 2: per CAD model and noise level; and the same per kind of target (face, edge,
+// corner, curved, island, multi_feature).
+std::vector<std::filesystem::path> table_2(const ResultsData& data, const FiguresOptions& options) {
+  auto model = [](const std::string& id) { return id.substr(4, id.find('/', 4) - 4); };
+  auto kind = [](const std::string& id) {
+    const std::size_t from = id.find('/', 4) + 1;
+    return target_kind(id.substr(from, id.find('/', from) - from));
+  };
+  auto files = write_table_2(table_2_rows(data, model), "model",
+                             options.out_dir / "table2_slice_new_vertex_error");
+  for (auto& f : write_table_2(table_2_rows(data, kind), "target kind",
+                               options.out_dir / "table2_by_target_kind"))
+    files.push_back(std::move(f));
+  return files;
 }
 
 // Figures 10 and 13 of the crest-line paper: holes across 1, 2, 3 creases of the fandisk.

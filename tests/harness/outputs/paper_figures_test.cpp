@@ -57,21 +57,36 @@ std::string table_file(const std::vector<std::filesystem::path>& files, const st
   return {};
 }
 
-// Table 2 and the crease table read the records they name: a model's row is the mean of its
-// holes' new-vertex errors per method, and the crease table lists each crease record.
+// Table 2 and the crease table read the records they name: a model's row is the mean of the
+// new-vertex errors of its small holes on which every compared method left new vertices (the
+// columns average the same holes), the kind table groups the same holes by target, and the
+// crease table lists each crease record.
 TEST(PaperFigures, TablesHoldTheRecordsValues) {
   ResultsData data;
+  auto loft = [](const std::string& id, double error, double faces) {
+    return record(id, "cad", "slice_loft",
+                  {{"new_vertex_mean_error_rel_diag", error},
+                   {"new_faces_count", faces},
+                   {"input_faces_count", 1000}});
+  };
+  auto other = [](const std::string& id, const std::string& method, double error) {
+    return record(id, "cad", method, {{"new_vertex_mean_error_rel_diag", error}});
+  };
   data.records = {
-      record("cad/fandisk/edge_convex/small", "cad", "slice_loft",
-             {{"new_vertex_mean_error_rel_diag", 1e-3},
-              {"new_faces_count", 40},
-              {"input_faces_count", 1000}}),
-      record("cad/fandisk/corner_ccc/small", "cad", "slice_loft",
-             {{"new_vertex_mean_error_rel_diag", 3e-3},
-              {"new_faces_count", 60},
-              {"input_faces_count", 1000}}),
-      record("cad/fandisk/edge_convex/small", "cad", "liepa_cgal",
-             {{"new_vertex_mean_error_rel_diag", 5e-3}}),
+      // Every method: in the table.
+      loft("cad/fandisk/edge_convex/small", 1e-3, 40),
+      other("cad/fandisk/edge_convex/small", "slice_direct", 2e-3),
+      other("cad/fandisk/edge_convex/small", "liepa_cgal", 5e-3),
+      loft("cad/fandisk/edge_reflex/small", 3e-3, 60),
+      other("cad/fandisk/edge_reflex/small", "slice_direct", 4e-3),
+      other("cad/fandisk/edge_reflex/small", "liepa_cgal", 7e-3),
+      // No slice_direct record: in no column.
+      loft("cad/fandisk/corner_ccc/small", 9e-3, 80),
+      other("cad/fandisk/corner_ccc/small", "liepa_cgal", 9e-3),
+      // A large hole: not in Table 2.
+      loft("cad/fandisk/island/large", 9e-3, 80),
+      other("cad/fandisk/island/large", "slice_direct", 9e-3),
+      other("cad/fandisk/island/large", "liepa_cgal", 9e-3),
       record("crease/fandisk/2", "crease", "crest_feature", {{"hausdorff_rel_diag", 0.25}}),
   };
   const auto dir = std::filesystem::temp_directory_path() / "holebench_figures_tables";
@@ -86,16 +101,28 @@ TEST(PaperFigures, TablesHoldTheRecordsValues) {
   options.out_dir = dir / "figures";
   const auto files = write_paper_figures(options);
   const std::string table2 = table_file(files, "table2");
-  // fandisk at noise 0: 1000 input triangles, (40 + 60) / 2 new, slice_loft (1e-3 + 3e-3) / 2,
-  // no slice_direct record, liepa_cgal 5e-3.
-  EXPECT_NE(table2.find("| fandisk | 0 | 1000 | 50 | 2.000e-03 | - | 5.000e-03 |"),
+  // fandisk at noise 0: the two edge holes, 1000 input triangles, (40 + 60) / 2 new,
+  // slice_loft (1e-3 + 3e-3) / 2, slice_direct 3e-3, liepa_cgal 6e-3.
+  EXPECT_NE(table2.find("| fandisk | 0 | 2 | 1000 | 50 | 2.000e-03 | 3.000e-03 | 6.000e-03 |"),
             std::string::npos)
       << table2;
+  const std::string kinds = table_file(files, "table2_by_target_kind");
+  EXPECT_NE(kinds.find("| edge | 0 | 2 | 1000 | 50 | 2.000e-03 | 3.000e-03 | 6.000e-03 |"),
+            std::string::npos)
+      << kinds;
+  EXPECT_EQ(kinds.find("| corner |"), std::string::npos) << kinds;
+  EXPECT_EQ(kinds.find("| island |"), std::string::npos) << kinds;
   const std::string creases = table_file(files, "figures10_13");
   EXPECT_NE(creases.find("| crease/fandisk/2 | crest_feature |"), std::string::npos) << creases;
   EXPECT_NE(creases.find("2.500e-01"), std::string::npos) << creases;
 
-  const auto gaps = paper_figure_gaps(read_results_json(results));
+  EXPECT_TRUE(paper_figure_gaps(read_results_json(results)).empty());
+  ResultsData without_direct;
+  for (const auto& r : data.records) {
+    if (r.job.method_id != "slice_direct")
+      without_direct.records.push_back(r);
+  }
+  const auto gaps = paper_figure_gaps(without_direct);
   ASSERT_EQ(gaps.size(), 1u);
   EXPECT_NE(gaps[0].find("slice_direct"), std::string::npos) << gaps[0];
   EXPECT_EQ(paper_figure_gaps(ResultsData{}).size(), 2u);  // no CAD, no crease records
