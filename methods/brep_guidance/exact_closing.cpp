@@ -481,18 +481,15 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
       ++result.new_faces;
     }
   }
-  // A part split at the loop's vertices, or triangulated in the loop's order, need not be
-  // embedded in its plane: the closing is kept only if it intersects neither itself nor the
-  // mesh around it.
-  if (loop_vertices_on_edges || loop_order) {
-    const std::size_t pairs = patch_intersections(mesh, added_faces);
-    if (pairs > 0) {
-      mesh = backup;
-      result.error = "the closing would intersect itself or the mesh around it (" +
-                     std::to_string(pairs) + " face pairs)";
-      result.new_faces = 0;
-      return result;
-    }
+  // A part split at the loop's vertices, triangulated in the loop's order or turned over in
+  // its plane need not be embedded: the closing is kept only if it intersects neither itself
+  // nor the mesh around it.
+  if (const std::size_t pairs = patch_intersections(mesh, added_faces); pairs > 0) {
+    mesh = backup;
+    result.error = "the closing would intersect itself or the mesh around it (" +
+                   std::to_string(pairs) + " face pairs)";
+    result.new_faces = 0;
+    return result;
   }
   result.new_vertices = new_points.size();
   result.closed = true;

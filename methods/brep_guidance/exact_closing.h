@@ -10,9 +10,10 @@
 // Delaunay triangulation in the face's plane. Rebuilt edges are subdivided at about the
 // hole's mean edge length, the same points on both faces that share them.
 //
-// Where that plan fails (a part's projection is not simple, or its triangulation would reuse
-// an edge), two more attempts, in this order, each kept only if the new faces intersect
-// neither each other nor the mesh within two vertex rings (CGAL, exact predicates): loop
+// Every closing is kept only if its new faces intersect neither each other nor the mesh
+// within two vertex rings (CGAL, exact predicates). Where the plan fails (a part's
+// projection is not simple, or its triangulation would reuse an edge), two more attempts,
+// in this order: loop
 // vertices that lie on a rebuilt edge become its corners and the part is split where it
 // passes them twice (the loop touches the faces' common line there); then a part that is
 // still not simple in its plane is triangulated in the loop's own order, choosing the
