@@ -74,6 +74,8 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
       report.closed = closing.closed;
       report.new_faces = closing.new_faces;
       report.new_vertices = closing.new_vertices;
+      if (closing.closed && !closing.note.empty())
+        report.note = "exact closing: " + closing.note;
       if (!closing.closed) {
         // The paper closes this hole (case a); an arrow stands in for the closing. A hole the
         // user declined (case b) is guided on the paper's own path: no fallback.

@@ -9,6 +9,16 @@
 // hole half-edges on that face, closed by the rebuilt edges) triangulated by a constrained
 // Delaunay triangulation in the face's plane. Rebuilt edges are subdivided at about the
 // hole's mean edge length, the same points on both faces that share them.
+//
+// Every closing is kept only if its new faces intersect neither each other nor the mesh
+// within two vertex rings (CGAL, exact predicates). Where the plan fails (a part's
+// projection is not simple, or its triangulation would reuse an edge), two more attempts,
+// in this order: loop
+// vertices that lie on a rebuilt edge become its corners and the part is split where it
+// passes them twice (the loop touches the faces' common line there); then a part that is
+// still not simple in its plane is triangulated in the loop's own order, choosing the
+// triangulation with the least area folded against the polygon in the plane. The note says
+// which was needed.
 #pragma once
 
 #include "core/mesh.h"
@@ -24,6 +34,10 @@ struct ClosingResult {
   std::size_t new_faces = 0;
   std::size_t new_vertices = 0;
   std::string error;  ///< why the hole could not be closed
+  /// How it was closed where the plan alone did not (loop vertices taken as corners of a
+  /// rebuilt edge; a part triangulated in the loop's order, with its folded area); empty
+  /// otherwise.
+  std::string note;
 };
 
 /// Closes `hole` (k <= 3, inner, planes not dependent) in `mesh`. New faces get the region

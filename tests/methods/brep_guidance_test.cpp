@@ -4,7 +4,9 @@
 #include "core/geometry.h"
 #include "core/plane_fit.h"
 #include "generators/case_catalog.h"
+#include "methods/brep_guidance/exact_closing.h"
 #include "methods/brep_guidance/hole_classification.h"
+#include "methods/brep_guidance/hole_detection.h"
 #include "metrics/embree/triangle_scene.h"
 
 #include <gtest/gtest.h>
@@ -509,6 +511,74 @@ TEST(BrepGuidance, ExactClosingRebuildsTheEdgeAndTheCornerOnTheFittedPlanes) {
       if (S)
         EXPECT_EQ(at_S, 1);
     }
+  }
+}
+
+// A k = 2 hole whose loop touches the faces' common line between the rebuilt edge's ends, made
+// by hand: an L-shaped sheet (face 0 in z = 0, y >= 0; face 1 in y = 0, z <= 0; unit grid
+// cells, each split into two triangles) folded along the x axis. The hole removes face 1's
+// cells x in [2, 7], z in [-1, 0] and face 0's cells x in [2, 4] and [5, 7], y in [0, 1]: face
+// 0 keeps the cell x in [4, 5] on the fold, so the loop runs along the fold from (4, 0, 0) to
+// (5, 0, 0) between the transitions (2, 0, 0) and (7, 0, 0). Face 0's part (two lobes joined by
+// that stretch, closed by the rebuilt edge from x = 7 back to x = 2) overlaps itself along the
+// stretch, and its new points at x = 4 and 5 coincide with the loop's vertices there: the
+// Delaunay triangulation of the part failed ("two points of the polygon project onto the same
+// point") and the hole was guided. Those loop vertices are now the rebuilt edge's corners, the
+// part splits there into its two lobes, and the closing is the complete sheet: every new face in
+// its face's plane, every new vertex on the fold, the patch's area the removed 9 cells.
+TEST(BrepGuidanceExactClosing, ALoopTouchingTheCommonLineIsSplitThere) {
+  Mesh mesh;
+  auto point = [](int x, int s) { return s >= 0 ? Point(x, s, 0) : Point(x, 0, s); };
+  std::vector<std::vector<VertexHandle>> grid(10, std::vector<VertexHandle>(9));
+  for (int x = 0; x <= 9; ++x) {
+    for (int s = -4; s <= 4; ++s)
+      grid[x][s + 4] = mesh.add_vertex(point(x, s));
+  }
+  auto removed = [](int x, int s) {
+    return (s == -1 && x >= 2 && x < 7) || (s == 0 && ((x >= 2 && x < 4) || (x >= 5 && x < 7)));
+  };
+  for (int x = 0; x < 9; ++x) {
+    for (int s = -4; s < 4; ++s) {
+      if (removed(x, s))
+        continue;
+      const VertexHandle a = grid[x][s + 4], b = grid[x + 1][s + 4], c = grid[x + 1][s + 5],
+                         d = grid[x][s + 5];
+      for (const FaceHandle f : {mesh.add_face(a, b, c), mesh.add_face(a, c, d)}) {
+        ASSERT_TRUE(f.is_valid());
+        set_region(mesh, f, s >= 0 ? 0 : 1);
+      }
+    }
+  }
+  mark_all_original(mesh);
+  const brep_guidance::BrepFaces faces = brep_guidance::extract_brep_faces(mesh);
+  ASSERT_TRUE(faces.from_input);
+  const auto holes = brep_guidance::detect_holes(mesh, faces);
+  const auto hole = std::find_if(holes.begin(), holes.end(), [](const auto& h) {
+    return h.k() == 2 && h.halfedges.size() < 30;  // not the sheet's border
+  });
+  ASSERT_NE(hole, holes.end());
+  const auto closing = brep_guidance::close_hole_exactly(mesh, faces, *hole);
+  ASSERT_TRUE(closing.closed) << closing.error;
+  EXPECT_NE(closing.note.find("loop vertices on the rebuilt edges"), std::string::npos)
+      << closing.note;
+  EXPECT_EQ(find_boundary_loops(mesh).size(), 1u);  // the sheet's border only
+  double area = 0.0;
+  for (auto f : mesh.faces()) {
+    if (!is_new(mesh, f))
+      continue;
+    area += face_area(mesh, f);
+    for (auto v : mesh.fv_range(f)) {
+      const Point& p = mesh.point(v);
+      // Region 0 is the plane z = 0, region 1 the plane y = 0.
+      EXPECT_LE(std::abs(region(mesh, f) == 0 ? p[2] : p[1]), 1e-9) << p;
+    }
+  }
+  EXPECT_NEAR(area, 9.0, 1e-9);  // the 9 removed unit cells
+  for (auto v : mesh.vertices()) {
+    if (!is_new(mesh, v))
+      continue;
+    const Point& p = mesh.point(v);
+    EXPECT_LE(std::abs(p[1]) + std::abs(p[2]), 1e-9) << p;  // on the fold
   }
 }
 
