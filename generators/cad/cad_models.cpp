@@ -45,7 +45,8 @@ std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem:
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return std::tolower(c); });
-    return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply";
+    return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply" ||
+           occt::is_brep_file(p);
   };
   for (const auto& path : paths) {
     if (std::filesystem::is_directory(path)) {
@@ -69,14 +70,17 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
   const std::string key =
-      fmt::format("{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
-                  options.sharp_angle_degrees);
+      fmt::format("{}|{}|{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
+                  options.sharp_angle_degrees, options.tessellation.linear_deflection_rel_diag,
+                  options.tessellation.angular_deflection_radians);
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (auto it = cache.find(key); it != cache.end())
       return it->second;
   }
-  Mesh mesh = read_mesh(source.path);
+  Mesh mesh = occt::is_brep_file(source.path)
+                  ? occt::read_brep_mesh(source.path, options.tessellation).mesh
+                  : read_mesh(source.path);
   const auto loops = find_boundary_loops(mesh);
   if (!loops.empty()) {
     throw InvalidInputError(
