@@ -3,7 +3,10 @@
 #include "generators/case_catalog.h"
 
 #include "core/boundary_loops.h"
+#include "core/geometry.h"
+#include "core/plane_fit.h"
 #include "tests/core/occt/test_parts.h"
+#include "tests/generators/label_geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -56,6 +59,43 @@ TEST(BrepFileCases, StepPartsArePunchedAndBadStepFilesSkipped) {
   ASSERT_EQ(a.input.n_vertices(), b.input.n_vertices());
   for (auto v : a.input.vertices())
     EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
+}
+
+// Holes punched into B-Rep parts take their labels from the B-Rep's faces: of the face,
+// edge and corner holes whose removed faces are all planar, at least 90 % are labelled, and
+// every label agrees with the one read off the meshes.
+TEST(BrepFileCases, PlanarHolesInBrepPartsAreLabelledFromTheFaces) {
+  const auto dir = occt::test::fresh_temp_dir("brep_file_labels");
+  for (const auto& part : occt::test::test_parts())
+    occt::test::write_step(part.shape, dir / (part.name + ".step"));
+  const CaseCatalog catalog(user_files_only(dir));
+  EXPECT_TRUE(catalog.skipped().empty());
+  int planar_holes = 0, labelled = 0;
+  for (const auto& descriptor : catalog.cases()) {
+    const std::string& kind = descriptor.kind;
+    if (kind != "face_interior" && kind.rfind("edge_", 0) != 0 && kind.rfind("corner_", 0) != 0)
+      continue;
+    SCOPED_TRACE(descriptor.id);
+    const Case c = catalog.make(descriptor.id);
+    // B-Rep faces are the complete model's regions: a planar one fits a plane exactly.
+    const auto planes = fit_region_planes(c.complete);
+    const double tolerance = 1e-6 * bounding_box_diagonal(c.complete);
+    bool planar = true;
+    for (int f : c.holes[0].removed_faces) {
+      const auto& fit = planes[region(c.complete, c.complete.face_handle(f))];
+      planar = planar && fit.valid && fit.plane.rms_residual < tolerance;
+    }
+    if (!planar)
+      continue;
+    ++planar_holes;
+    const auto loops = find_boundary_loops(c.input);
+    if (!c.holes[0].labels || loops.size() != 1)
+      continue;
+    ++labelled;
+    label_geometry::expect_punched_labels_agree(c, loops[0]);
+  }
+  EXPECT_GE(planar_holes, 20);
+  EXPECT_GE(labelled, 0.9 * planar_holes) << labelled << " of " << planar_holes;
 }
 
 }  // namespace
