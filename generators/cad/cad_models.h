@@ -37,10 +37,11 @@ struct PrepareOptions {
 };
 
 /// Reads (a B-Rep file by occt::read_brep_mesh, a mesh file by read_mesh), checks (closed: holes
-/// are punched into complete models) and remeshes a model, then segments it and finds its features.
-/// Throws InvalidInputError with the reason for a missing, open, non-manifold or degenerate mesh.
-/// Results are cached per path for the process, so listing and making cases analyse each model
-/// once.
+/// are punched into complete models) and remeshes a model, then segments it and finds its
+/// features. A B-Rep model is not segmented: its faces, kept through the remeshing, are its
+/// regions. Throws InvalidInputError with the reason for a missing, open, non-manifold or
+/// degenerate mesh. Results are cached per path and options for the process, so listing and
+/// making cases analyse each model once.
 std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& source,
                                                        const PrepareOptions& options = {});
 
