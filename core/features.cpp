@@ -3,6 +3,7 @@
 #include "core/geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace holebench {
 
@@ -72,11 +73,30 @@ SharpEdgeChain trace_chain(const Mesh& mesh, VertexHandle start, EdgeHandle firs
   return chain;
 }
 
+// The mesh's own region ids as a segmentation; sharp edges are the region borders whose
+// dihedral angle exceeds the segmentation's threshold.
+SegmentationResult regions_of_mesh(const Mesh& mesh, const SegmentationOptions& options) {
+  const double threshold = options.sharp_angle_degrees * M_PI / 180.0;
+  SegmentationResult result;
+  result.face_region.assign(mesh.n_faces(), kNoRegion);
+  for (auto f : mesh.faces())
+    result.face_region[f.idx()] = region(mesh, f);
+  result.region_count = region_count(mesh);
+  for (auto e : mesh.edges()) {
+    if (!e.is_boundary() && region(mesh, e.h0().face()) != region(mesh, e.h1().face()) &&
+        std::abs(signed_dihedral_angle(mesh, e)) > threshold) {
+      result.sharp_edges.push_back(e);
+    }
+  }
+  return result;
+}
+
 }  // namespace
 
 FeatureAnalysis analyse_features(const Mesh& mesh, const FeatureOptions& options) {
   FeatureAnalysis analysis;
-  analysis.segmentation = segment_regions(mesh, options.segmentation);
+  analysis.segmentation = options.regions_from_mesh ? regions_of_mesh(mesh, options.segmentation)
+                                                    : segment_regions(mesh, options.segmentation);
   analysis.edge_is_sharp.assign(mesh.n_edges(), 0);
   analysis.edge_convexity.assign(mesh.n_edges(), Convexity::Convex);
   for (auto e : analysis.segmentation.sharp_edges) {

@@ -30,6 +30,10 @@ struct Corner {
 
 struct FeatureOptions {
   SegmentationOptions segmentation;  ///< regions and sharp edges come from this
+  /// Take the regions from the mesh's region ids (e.g. B-Rep faces) instead of segmenting;
+  /// sharp edges are then the borders between two regions whose dihedral angle exceeds
+  /// segmentation.sharp_angle_degrees (a tangent border, as along a fillet, is not sharp).
+  bool regions_from_mesh = false;
 };
 
 struct FeatureAnalysis {

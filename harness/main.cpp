@@ -100,9 +100,15 @@ int validate_command(const std::vector<std::filesystem::path>& files) {
 void add_catalog_options(CLI::App* command, CatalogOptions& catalog, bool& no_cad) {
   command
       ->add_option("--mesh", catalog.user_meshes,
-                   "Your own mesh file or folder (OFF/OBJ/STL/PLY), punched like the CAD "
-                   "models; repeatable. Its cases are file/<stem>/...")
+                   "Your own mesh or B-Rep file or folder (OFF/OBJ/STL/PLY, STEP/IGES/BREP), "
+                   "punched like the CAD models; repeatable. Its cases are file/<stem>/...")
       ->check(CLI::ExistingPath);
+  command
+      ->add_option("--brep-deflection", catalog.prepare.tessellation.linear_deflection_rel_diag,
+                   "Tessellation of B-Rep files: the largest distance between a triangle and "
+                   "its face, relative to the bounding-box diagonal")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   command->add_flag("--no-cad", no_cad,
                     "Leave out the CGAL data set's CAD models (faster listing)");
   command->add_option("--cad-dir", catalog.cad_data_dir,
@@ -477,6 +483,7 @@ int main(int argc, char** argv) {
         options.out_dir = run_options.out_dir;
       }
       options.catalog.user_meshes = run_options.catalog.user_meshes;
+      options.catalog.prepare.tessellation = run_options.catalog.prepare.tessellation;
       if (run->count("--cad-dir"))
         options.catalog.cad_data_dir = run_options.catalog.cad_data_dir;
       if (no_cad)

@@ -10,6 +10,9 @@ packages=(
   libcgal-dev libcgal-demo libeigen3-dev libgmp-dev libmpfr-dev libboost-dev
   libopenmesh-dev
   libembree-dev libtbb-dev
+  # B-Rep files (STEP, IGES, BREP) through OpenCASCADE 7.6 (core/occt/)
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
+  libocct-foundation-dev
   # images (OpenImageIO's CMake targets name /usr/include/opencv4 and its tools)
   libopenimageio-dev libopencv-core-dev openimageio-tools
   # formatting, JSON, command line

@@ -45,7 +45,8 @@ std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem:
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return std::tolower(c); });
-    return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply";
+    return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply" ||
+           occt::is_brep_file(p);
   };
   for (const auto& path : paths) {
     if (std::filesystem::is_directory(path)) {
@@ -69,14 +70,19 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
   const std::string key =
-      fmt::format("{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
-                  options.sharp_angle_degrees);
+      fmt::format("{}|{}|{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
+                  options.sharp_angle_degrees, options.tessellation.linear_deflection_rel_diag,
+                  options.tessellation.angular_deflection_radians);
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (auto it = cache.find(key); it != cache.end())
       return it->second;
   }
-  Mesh mesh = read_mesh(source.path);
+  // A B-Rep model's regions are its faces: they are kept through remeshing and used instead
+  // of a segmentation, so its labels come from the B-Rep's faces.
+  const bool brep = occt::is_brep_file(source.path);
+  Mesh mesh =
+      brep ? occt::read_brep_mesh(source.path, options.tessellation).mesh : read_mesh(source.path);
   const auto loops = find_boundary_loops(mesh);
   if (!loops.empty()) {
     throw InvalidInputError(
@@ -87,8 +93,10 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   RemeshOptions remesh;
   remesh.target_edge_length = options.target_edge_length_rel_diag * bounding_box_diagonal(mesh);
   remesh.sharp_angle_degrees = options.sharp_angle_degrees;
+  remesh.keep_regions = brep;
   FeatureOptions features;
   features.segmentation.sharp_angle_degrees = options.sharp_angle_degrees;
+  features.regions_from_mesh = brep;
   auto model = std::make_shared<const AnalysedModel>(
       analyse_model(source.name, remesh_isotropic(mesh, remesh), features));
   std::lock_guard<std::mutex> lock(mutex);

@@ -2,6 +2,7 @@
 // mesh files, prepared for punching (closed check, isotropic remeshing, segmentation).
 #pragma once
 
+#include "core/occt/brep_mesh.h"
 #include "generators/punch_targets.h"
 
 #include <filesystem>
@@ -25,19 +26,22 @@ std::filesystem::path default_cad_data_dir();
 /// files exist: a missing one is reported when it is prepared).
 std::vector<CadModelSource> cgal_cad_models(const std::filesystem::path& data_dir);
 
-/// Mesh files named by a user: files (OFF, OBJ, STL, PLY) or folders (every such file in
-/// it, sorted by name).
+/// Model files named by a user: files (meshes: OFF, OBJ, STL, PLY; B-Rep models: STEP, IGES,
+/// BREP) or folders (every such file in it, sorted by name).
 std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem::path>& paths);
 
 struct PrepareOptions {
   double target_edge_length_rel_diag = 0.01;  ///< remeshing target, relative to the diagonal
   double sharp_angle_degrees = 30.0;
+  occt::TessellationOptions tessellation;  ///< for B-Rep files (STEP, IGES, BREP)
 };
 
-/// Reads, checks (closed: holes are punched into complete models) and remeshes a model,
-/// then segments it and finds its features. Throws InvalidInputError with the reason for a
-/// missing, open, non-manifold or degenerate mesh. Results are cached per path for the
-/// process, so listing and making cases analyse each model once.
+/// Reads (a B-Rep file by occt::read_brep_mesh, a mesh file by read_mesh), checks (closed: holes
+/// are punched into complete models) and remeshes a model, then segments it and finds its
+/// features. A B-Rep model is not segmented: its faces, kept through the remeshing, are its
+/// regions. Throws InvalidInputError with the reason for a missing, open, non-manifold or
+/// degenerate mesh. Results are cached per path and options for the process, so listing and
+/// making cases analyse each model once.
 std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& source,
                                                        const PrepareOptions& options = {});
 

@@ -29,6 +29,32 @@ TEST(Features, BoxHasTwelveConvexChainsAndEightConvexCorners) {
   EXPECT_EQ(signature_counts(analysis), (std::map<std::string, int>{{"ccc", 8}}));
 }
 
+// Regions taken from the mesh (a B-Rep's faces): the box's top face split in two at x = 1 is
+// 7 regions, but the border inside the top face is flat, so no sharp edge and no corner: the
+// box's 8 convex corners, and its 12 convex chains plus 2, because the two top edges along x
+// change region pair at x = 1 (a chain never does).
+TEST(Features, RegionsFromTheMeshWithAFlatBorderKeepTheBoxsFeatures) {
+  Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  int top_left = 0;
+  for (auto f : box.faces()) {
+    const Point c = box.calc_face_centroid(f);
+    if (c[2] > 0.99 && c[0] < 1.0) {
+      set_region(box, f, 6);
+      ++top_left;
+    }
+  }
+  ASSERT_GT(top_left, 0);
+  FeatureOptions options;
+  options.regions_from_mesh = true;
+  const auto analysis = analyse_features(box, options);
+  EXPECT_EQ(analysis.segmentation.region_count, 7);
+  EXPECT_EQ(analysis.chains.size(), 14u);
+  for (const auto& chain : analysis.chains)
+    EXPECT_EQ(chain.convexity, Convexity::Convex);
+  EXPECT_EQ(signature_counts(analysis), (std::map<std::string, int>{{"ccc", 8}}));
+  EXPECT_EQ(analyse_features(box).segmentation.region_count, 6);  // segmentation merges them
+}
+
 // The notched block ([0,2]^3 without [1,2]^3): the notch's inner corner (1,1,1) has three
 // reflex edges; (2,1,1), (1,2,1), (1,1,2), where one notch edge meets a block face, have two
 // convex and one reflex edge; the 7 remaining block corners and the notch's outer corners

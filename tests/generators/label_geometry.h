@@ -6,13 +6,17 @@
 #include "core/case.h"
 #include "core/geometry.h"
 #include "core/mesh.h"
+#include "core/plane_fit.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace holebench::generators::label_geometry {
@@ -153,6 +157,67 @@ inline void expect_missing_corners_removed(const Case& c, const HoleTruth& hole,
     for (auto f : c.complete.vf_range(complete_vertex.at(key_of(corner))))
       EXPECT_TRUE(removed[f.idx()]);
   }
+}
+
+// The labels of a punched case with one hole and one loop (`loop`, of c.input), read a second
+// way off the meshes as the B-Rep cases' are: k and the regions along the loop, each
+// transition's convexity from the complete mesh's dihedral angle, the orientation from the
+// fitted planes of the loop's regions, and the missing corners.
+inline void expect_punched_labels_agree(const Case& c, const BoundaryLoop& loop) {
+  const HoleLabels& labels = *c.holes[0].labels;
+  const VertexOfPoint complete_vertex = vertex_of_point(c.complete);
+  std::vector<char> removed(c.complete.n_faces(), 0);
+  for (int f : c.holes[0].removed_faces)
+    removed[f] = 1;
+
+  // The input carries no region ids (a method segments it itself): each input face takes
+  // the region of the complete model's face at the same three points.
+  std::map<std::array<Key, 3>, int> region_of_corners;
+  const auto corners_of = [](const Mesh& mesh, FaceHandle f) {
+    std::array<Key, 3> corners;
+    int k = 0;
+    for (auto v : mesh.fv_range(f))
+      corners[k++] = key_of(mesh.point(v));
+    std::sort(corners.begin(), corners.end());
+    return corners;
+  };
+  for (auto f : c.complete.faces())
+    region_of_corners[corners_of(c.complete, f)] = region(c.complete, f);
+  const auto visits = visits_along(
+      c.input, loop, [&](FaceHandle f) { return region_of_corners.at(corners_of(c.input, f)); });
+  std::vector<int> regions;
+  for (const auto& v : visits)
+    regions.push_back(v.region);
+  ASSERT_EQ(static_cast<int>(regions.size()), labels.k);
+  const int rotation = rotation_of(regions, labels.regions);
+  ASSERT_GE(rotation, 0) << "regions differ up to rotation: " << ::testing::PrintToString(regions)
+                         << " vs " << ::testing::PrintToString(labels.regions);
+  expect_transitions_match(c, loop, visits, rotation, labels, complete_vertex);
+
+  // Inner: every removed face lies in the plane of one of the loop's regions.
+  const auto planes = fit_region_planes(c.complete);
+  const double tolerance = 1e-6 * bounding_box_diagonal(c.complete);
+  bool all_in_planes = true;
+  double worst = 0.0;
+  for (int f : c.holes[0].removed_faces) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int r : regions) {
+      if (!planes[r].valid)
+        continue;
+      double farthest = 0.0;
+      for (auto v : c.complete.fv_range(c.complete.face_handle(f)))
+        farthest =
+            std::max(farthest, std::abs(planes[r].plane.signed_distance(c.complete.point(v))));
+      best = std::min(best, farthest);
+    }
+    worst = std::max(worst, best);
+    all_in_planes = all_in_planes && best < tolerance;
+  }
+  SCOPED_TRACE("farthest removed vertex from the loop's planes: " +
+               std::to_string(worst / bounding_box_diagonal(c.complete)) + " diag");
+  EXPECT_EQ(all_in_planes ? Orientation::Inner : Orientation::Outer, labels.orientation);
+
+  expect_missing_corners_removed(c, c.holes[0], complete_vertex, removed);
 }
 
 }  // namespace holebench::generators::label_geometry

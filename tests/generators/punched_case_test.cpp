@@ -34,9 +34,7 @@ std::multiset<Convexity> signature_of(const std::string& kind) {
 }
 
 // The labels of every labelled punched case (procedural solids and CAD models, one hole,
-// one loop), read a second way off the meshes as the B-Rep cases' are: k and the regions
-// along the loop, each transition's convexity from the complete mesh's dihedral angle, the
-// orientation from the fitted planes of the loop's regions, and the missing corners.
+// one loop), read a second way off the meshes (label_geometry::expect_punched_labels_agree).
 TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
   using namespace label_geometry;
   const CaseCatalog catalog;
@@ -49,61 +47,7 @@ TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
     if (c.holes.size() != 1 || loops.size() != 1 || !c.holes[0].labels)
       continue;
     SCOPED_TRACE(descriptor.id);
-    const HoleLabels& labels = *c.holes[0].labels;
-    const auto& loop = loops[0];
-    const VertexOfPoint complete_vertex = vertex_of_point(c.complete);
-    std::vector<char> removed(c.complete.n_faces(), 0);
-    for (int f : c.holes[0].removed_faces)
-      removed[f] = 1;
-
-    // The input carries no region ids (a method segments it itself): each input face takes
-    // the region of the complete model's face at the same three points.
-    std::map<std::array<Key, 3>, int> region_of_corners;
-    const auto corners_of = [](const Mesh& mesh, FaceHandle f) {
-      std::array<Key, 3> corners;
-      int k = 0;
-      for (auto v : mesh.fv_range(f))
-        corners[k++] = key_of(mesh.point(v));
-      std::sort(corners.begin(), corners.end());
-      return corners;
-    };
-    for (auto f : c.complete.faces())
-      region_of_corners[corners_of(c.complete, f)] = region(c.complete, f);
-    const auto visits = visits_along(
-        c.input, loop, [&](FaceHandle f) { return region_of_corners.at(corners_of(c.input, f)); });
-    std::vector<int> regions;
-    for (const auto& v : visits)
-      regions.push_back(v.region);
-    ASSERT_EQ(static_cast<int>(regions.size()), labels.k);
-    const int rotation = rotation_of(regions, labels.regions);
-    ASSERT_GE(rotation, 0) << "regions differ up to rotation: " << ::testing::PrintToString(regions)
-                           << " vs " << ::testing::PrintToString(labels.regions);
-    expect_transitions_match(c, loop, visits, rotation, labels, complete_vertex);
-
-    // Inner: every removed face lies in the plane of one of the loop's regions.
-    const auto planes = fit_region_planes(c.complete);
-    const double tolerance = 1e-6 * bounding_box_diagonal(c.complete);
-    bool all_in_planes = true;
-    double worst = 0.0;
-    for (int f : c.holes[0].removed_faces) {
-      double best = std::numeric_limits<double>::infinity();
-      for (int r : regions) {
-        if (!planes[r].valid)
-          continue;
-        double farthest = 0.0;
-        for (auto v : c.complete.fv_range(c.complete.face_handle(f)))
-          farthest =
-              std::max(farthest, std::abs(planes[r].plane.signed_distance(c.complete.point(v))));
-        best = std::min(best, farthest);
-      }
-      worst = std::max(worst, best);
-      all_in_planes = all_in_planes && best < tolerance;
-    }
-    SCOPED_TRACE("farthest removed vertex from the loop's planes: " +
-                 std::to_string(worst / bounding_box_diagonal(c.complete)) + " diag");
-    EXPECT_EQ(all_in_planes ? Orientation::Inner : Orientation::Outer, labels.orientation);
-
-    expect_missing_corners_removed(c, c.holes[0], complete_vertex, removed);
+    expect_punched_labels_agree(c, loops[0]);
     ++checked;
   }
   // The procedural solids alone give more than a dozen labelled holes (the CAD models more

@@ -1,0 +1,60 @@
+// B-Rep files (STEP, IGES, BREP) read through OpenCASCADE as one closed triangle mesh whose
+// region ids are the B-Rep's face ids. This header names no OpenCASCADE type: the rest of
+// holebench reads B-Rep files through it without seeing the library.
+#pragma once
+
+#include "core/mesh.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace holebench::occt {
+
+/// The kind of surface a B-Rep face lies on.
+enum class SurfaceType : std::uint8_t { Plane, Cylinder, Cone, Sphere, Torus, BSpline, Other };
+
+/// "plane", "cylinder", "cone", "sphere", "torus", "bspline", "other".
+const char* to_string(SurfaceType type);
+
+enum class BrepFormat { Step, Iges, Brep };
+
+/// The format a file name's extension names: .step/.stp, .iges/.igs, .brep/.brp (any case);
+/// nothing for other extensions.
+std::optional<BrepFormat> brep_format(const std::filesystem::path& path);
+
+/// True if brep_format names a format: the files read_brep_mesh reads.
+inline bool is_brep_file(const std::filesystem::path& path) {
+  return brep_format(path).has_value();
+}
+
+struct TessellationOptions {
+  /// BRepMesh_IncrementalMesh's linear deflection (the largest distance between a triangle
+  /// and its face), relative to the bounding-box diagonal of the shape.
+  double linear_deflection_rel_diag = 0.001;
+  /// BRepMesh_IncrementalMesh's angular deflection: the largest angle in radians between the
+  /// normals of a curved face across one triangle (0.35: at least 18 segments on a circle).
+  double angular_deflection_radians = 0.35;
+};
+
+/// A tessellated B-Rep: every triangle's region id is the id of the B-Rep face it lies on.
+struct BrepMesh {
+  /// Vertices shared along the B-Rep's edges, so one closed surface per closed shell.
+  /// Every element is `Provenance::Original`.
+  Mesh mesh;
+  /// Per B-Rep face id (= region id, 0-based, in the order of TopExp::MapShapes): the type
+  /// of its surface. A triangle's surface type is face_surfaces[region(mesh, f)].
+  std::vector<SurfaceType> face_surfaces;
+};
+
+/// Reads a STEP, IGES or BREP file (by extension) and tessellates it (tessellate_shape).
+/// Deterministic: the same file and options give the same mesh bit for bit.
+/// Throws InvalidInputError with a one-line message naming the file: missing file, unknown
+/// extension, a file OpenCASCADE cannot read as its format (with the read status), no faces,
+/// a face that does not tessellate, a mesh that build_mesh rejects.
+/// OpenCASCADE's console messages are silenced.
+BrepMesh read_brep_mesh(const std::filesystem::path& path, const TessellationOptions& options = {});
+
+}  // namespace holebench::occt

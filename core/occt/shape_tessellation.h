@@ -1,0 +1,32 @@
+// Tessellating an OpenCASCADE shape into holebench's mesh, welded along the B-Rep's edges.
+#pragma once
+
+// Before any OpenCASCADE header: OpenCASCADE's `Handle` macro breaks OpenMesh's headers.
+#include "core/occt/brep_mesh.h"
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+
+namespace holebench::occt {
+
+/// Tessellates `shape` with BRepMesh_IncrementalMesh (sequential, so deterministic) at a
+/// linear deflection of options.linear_deflection_rel_diag times the diagonal of the shape's
+/// exact bounding box, and welds the faces' triangulations into one mesh:
+/// - the nodes of a B-Rep vertex are one mesh vertex (at the vertex's point);
+/// - the nodes on a B-Rep edge come from the edge's polygon on each face's triangulation,
+///   which BRepMesh discretises once per edge, so neighbouring faces (and the two sides of a
+///   seam) share these vertices;
+/// - the nodes on a degenerated edge (a sphere's pole, a cone's apex) are the vertex's;
+///   triangles that thereby repeat a vertex are dropped;
+/// - triangles of a face with orientation TopAbs_REVERSED are flipped, so normals point out
+///   of a solid.
+/// Region id of each triangle: the index of its face in TopExp::MapShapes(shape, FACE),
+/// 0-based. Any existing triangulation of the shape is replaced (BRepTools::Clean).
+/// Throws InvalidInputError naming `source` for a shape without faces, a face without
+/// triangulation, or a mesh that build_mesh rejects (e.g. a non-manifold edge).
+/// \bug An open shell gives an open mesh; callers that need a closed one check it.
+BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& options,
+                          const std::string& source = "<shape>");
+
+}  // namespace holebench::occt

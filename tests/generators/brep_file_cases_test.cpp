@@ -1,0 +1,102 @@
+// file/ cases from B-Rep files: a STEP part built in code (tests/core/occt/test_parts.h) is
+// punched like a mesh file, and a file that is not STEP is skipped with its reason.
+#include "generators/case_catalog.h"
+
+#include "core/boundary_loops.h"
+#include "core/geometry.h"
+#include "core/plane_fit.h"
+#include "tests/core/occt/test_parts.h"
+#include "tests/generators/label_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+
+namespace holebench::generators {
+namespace {
+
+CatalogOptions user_files_only(const std::filesystem::path& dir) {
+  CatalogOptions options;
+  options.include_cad = false;
+  options.families = {"file"};
+  options.user_meshes = {dir};
+  return options;
+}
+
+// A folder with a STEP part and a garbage .step: the part's file/<stem>/... cases are listed
+// and made (a closed complete model, a holed input, the same input twice), the garbage file
+// is skipped with a one-line reason naming it.
+TEST(BrepFileCases, StepPartsArePunchedAndBadStepFilesSkipped) {
+  const auto dir = occt::test::fresh_temp_dir("brep_file_cases");
+  occt::test::write_step(occt::test::block_with_pocket_and_hole(), dir / "block.step");
+  std::ofstream(dir / "garbage.stp") << "ISO-10303-21;\nthis is not STEP\n";
+  const CaseCatalog catalog(user_files_only(dir));
+  std::set<std::string> kinds;
+  for (const auto& c : catalog.cases()) {
+    EXPECT_EQ(c.id.rfind("file/block/", 0), 0u) << c.id;
+    kinds.insert(c.kind);
+  }
+  // A block with a pocket has planar faces, convex and reflex edges and corners.
+  EXPECT_TRUE(kinds.count("face_interior"));
+  EXPECT_TRUE(kinds.count("edge_convex"));
+  EXPECT_TRUE(kinds.count("edge_reflex"));
+  ASSERT_EQ(catalog.skipped().size(), 1u);
+  const SkippedModel& skipped = catalog.skipped()[0];
+  EXPECT_EQ(skipped.name, "file/garbage");
+  EXPECT_NE(skipped.reason.find((dir / "garbage.stp").string() + ": not a readable STEP file"),
+            std::string::npos)
+      << skipped.reason;
+  EXPECT_EQ(skipped.reason.find('\n'), std::string::npos);
+
+  const Case a = catalog.make("file/block/edge_convex/small", 1, 5.0);
+  EXPECT_TRUE(find_boundary_loops(a.complete).empty());
+  EXPECT_EQ(find_boundary_loops(a.input).size(), 1u);
+  EXPECT_EQ(a.input.n_faces() + a.holes[0].removed_faces.size(), a.complete.n_faces());
+  const Case b = catalog.make("file/block/edge_convex/small", 1, 5.0);
+  ASSERT_EQ(a.input.n_vertices(), b.input.n_vertices());
+  for (auto v : a.input.vertices())
+    EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
+}
+
+// Holes punched into B-Rep parts take their labels from the B-Rep's faces: of the face,
+// edge and corner holes whose removed faces are all planar, at least 90 % are labelled, and
+// every label agrees with the one read off the meshes.
+TEST(BrepFileCases, PlanarHolesInBrepPartsAreLabelledFromTheFaces) {
+  const auto dir = occt::test::fresh_temp_dir("brep_file_labels");
+  for (const auto& part : occt::test::test_parts())
+    occt::test::write_step(part.shape, dir / (part.name + ".step"));
+  const CaseCatalog catalog(user_files_only(dir));
+  EXPECT_TRUE(catalog.skipped().empty());
+  int planar_holes = 0, labelled = 0;
+  for (const auto& descriptor : catalog.cases()) {
+    const std::string& kind = descriptor.kind;
+    if (kind != "face_interior" && kind.rfind("edge_", 0) != 0 && kind.rfind("corner_", 0) != 0)
+      continue;
+    SCOPED_TRACE(descriptor.id);
+    const Case c = catalog.make(descriptor.id);
+    // B-Rep faces are the complete model's regions: a planar one fits a plane exactly.
+    const auto planes = fit_region_planes(c.complete);
+    const double tolerance = 1e-6 * bounding_box_diagonal(c.complete);
+    bool planar = true;
+    for (int f : c.holes[0].removed_faces) {
+      const auto& fit = planes[region(c.complete, c.complete.face_handle(f))];
+      planar = planar && fit.valid && fit.plane.rms_residual < tolerance;
+    }
+    if (!planar)
+      continue;
+    ++planar_holes;
+    const auto loops = find_boundary_loops(c.input);
+    if (!c.holes[0].labels || loops.size() != 1)
+      continue;
+    ++labelled;
+    label_geometry::expect_punched_labels_agree(c, loops[0]);
+  }
+  EXPECT_GE(planar_holes, 20);
+  EXPECT_GE(labelled, 0.9 * planar_holes) << labelled << " of " << planar_holes;
+}
+
+}  // namespace
+}  // namespace holebench::generators
