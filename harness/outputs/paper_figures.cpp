@@ -106,10 +106,10 @@ template <typename RowKey>
 std::map<std::pair<std::string, double>, Table2Row> table_2_rows(const ResultsData& data,
                                                                  RowKey row_key) {
   const auto& methods = kTable2Methods;
-  struct Job {
+  struct HoleRecords {  // one hole's records, per method
     std::map<std::string, const JobRecord*> by_method;
   };
-  std::map<std::tuple<std::string, double, std::uint64_t, std::string>, Job> jobs;
+  std::map<std::tuple<std::string, double, std::uint64_t, std::string>, HoleRecords> jobs;
   for (const auto& r : data.records) {
     const std::string& id = r.job.case_id;
     if (r.case_family != "cad" || r.job.user != "no_user" || id.size() < 6 ||

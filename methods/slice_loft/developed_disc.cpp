@@ -1,5 +1,7 @@
 #include "methods/slice_loft/developed_disc.h"
 
+#include "core/polygon.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,11 +11,8 @@ DevelopedDisc develop_onto_disc(const std::vector<Point>& loop) {
   DevelopedDisc disc;
   const std::size_t n = loop.size();
   double length = 0.0;
-  Point vector_area(0, 0, 0);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     length += (loop[(i + 1) % n] - loop[i]).norm();
-    vector_area += OpenMesh::cross(loop[i], loop[(i + 1) % n]) * 0.5;
-  }
   if (n == 0 || length <= 0.0)
     return disc;
   disc.radius = length / (2.0 * M_PI);
@@ -24,7 +23,7 @@ DevelopedDisc develop_onto_disc(const std::vector<Point>& loop) {
     walked += (loop[(i + 1) % n] - loop[i]).norm();
   }
   const double disc_area = M_PI * disc.radius * disc.radius;
-  const double area = vector_area.norm();
+  const double area = 0.5 * newell_normal(loop).norm();  // the loop's vector area
   disc.spacing_scale = area > 0.0 ? std::clamp(std::sqrt(disc_area / area), 1.0, 5.0) : 5.0;
   return disc;
 }

@@ -1,5 +1,7 @@
 #include "methods/slice_loft/pinched_portions.h"
 
+#include "core/polygon.h"
+
 #include <algorithm>
 
 namespace holebench::slice_loft {
@@ -57,19 +59,6 @@ void split_into_simple_loops(std::vector<BoundaryNode> loop,
   out.push_back(std::move(loop));
 }
 
-bool inside_in_plane(const std::vector<BoundaryNode>& loop, const LoftedPatch& patch,
-                     const Point& p) {
-  const double x = patch.u_of(p), y = patch.w_of(p);
-  bool in = false;
-  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-    const double xi = patch.u_of(loop[i].position), yi = patch.w_of(loop[i].position);
-    const double xj = patch.u_of(loop[j].position), yj = patch.w_of(loop[j].position);
-    if ((yi > y) != (yj > y) && x < (xj - xi) * (y - yi) / (yj - yi) + xi)
-      in = !in;
-  }
-  return in;
-}
-
 }  // namespace
 
 std::vector<VertexHandle> feature_points_on_boundary(
@@ -121,7 +110,10 @@ std::vector<Portion> split_pinched_portion(const Portion& portion, const LoftedP
   for (const auto& island : portion.islands) {
     std::size_t owner = 0;
     for (std::size_t p = 0; p < pieces.size() && !island.empty(); ++p) {
-      if (inside_in_plane(pieces[p].boundary, patch, island.front().position)) {
+      std::vector<Point> loop;
+      for (const auto& node : pieces[p].boundary)
+        loop.push_back(node.position);
+      if (inside_projected_polygon(loop, patch.n, island.front().position)) {
         owner = p;
         break;
       }
