@@ -147,7 +147,8 @@ MissingFeatures reconstruct_missing_features(const Mesh& mesh, Hole& hole,
     features.edges[1].points.assign(features.edges[0].points.rbegin(),
                                     features.edges[0].points.rend());
   } else {
-    // The corner: the average of the mutually closest points of every pair of edges.
+    // The corner (section 4.3): "the closest point on each extracted missing edge to the other
+    // extracted edges", averaged over every pair of edges.
     Point corner(0, 0, 0);
     int count = 0;
     for (std::size_t i = 0; i < m; ++i) {
@@ -161,7 +162,7 @@ MissingFeatures reconstruct_missing_features(const Mesh& mesh, Hole& hole,
     corner /= static_cast<double>(count);
     const double tolerance = options.corner_tolerance_rel_box * hole.box.diagonal();
     for (const auto& e : features.edges) {
-      if (distance_to_polyline(e.trace, corner) > tolerance) {
+      if (options.reject_far_corner && distance_to_polyline(e.trace, corner) > tolerance) {
         features.note = "the missing edges do not meet at one corner";
         features.edges.clear();
         return features;

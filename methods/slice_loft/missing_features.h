@@ -17,8 +17,12 @@ struct MissingFeatureOptions {
   /// Two ends whose traces start more opposite than this (cosine) are one edge through the
   /// hole; otherwise the traces meet at a corner.
   double through_edge_cosine = -0.5;
-  /// A corner is accepted when every trace passes within this fraction of the hole's box
-  /// diagonal of it.
+  /// The paper (section 4.3) takes the average of the mutually closest points of the missing
+  /// edges as the corner, whatever their distance. With this on (the project's own guard),
+  /// a corner is rejected, and the hole filled as one portion without features, when a trace
+  /// passes further than `corner_tolerance_rel_box` of the hole's box diagonal from it.
+  /// Off: docs/slice_loft.md ("The missing corner") has the measured comparison.
+  bool reject_far_corner = false;
   double corner_tolerance_rel_box = 0.35;
 };
 

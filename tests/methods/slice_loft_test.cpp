@@ -144,8 +144,12 @@ TEST(SliceLoft, FallbackNamesTheOnePortionFill) {
   EXPECT_TRUE(corner.holes[0].closed);
   EXPECT_EQ(corner.holes[0].fallback, "") << notes(corner);
 
-  const MethodResult dependent =
-      run_loft(generators::make_case("brep/k3/linearly-dependent/small", 0, 5.0));
+  // With the project's guard on the corner, the three missing edges of this hole (its faces'
+  // planes share no point) do not meet, and it is filled as one portion.
+  SliceLoftOptions guarded;
+  guarded.features.reject_far_corner = true;
+  const MethodResult dependent = run_slice_loft(
+      generators::make_case("brep/k3/linearly-dependent/small", 0, 5.0).input, guarded);
   ASSERT_EQ(dependent.holes.size(), 1u);
   EXPECT_NE(dependent.holes[0].note.find("missing features not rebuilt"), std::string::npos)
       << notes(dependent);
@@ -238,6 +242,24 @@ TEST(SliceLoft, PortionFoldedInItsPlaneIsTrimmedOnTheSurface) {
 
 // A missing edge whose feature line ends at the hole (the traces from both ends lead away
 // from each other) is joined straight and the hole is filled on the paper's path.
+// Section 4.3: "the corner point is determined by finding the closest point on each extracted
+// missing edge to the other extracted edges and taking the average of these points", with no
+// test of how close the edges come. The hole whose faces' planes share no point gets its
+// corner that way and is filled on the paper's path, as the guarded option's test above
+// fills it without features.
+TEST(SliceLoft, MissingCornerIsTheAverageOfTheClosestPoints) {
+  for (const double noise : {0.0, 5.0}) {
+    const MethodResult result =
+        run_loft(generators::make_case("brep/k3/linearly-dependent/small", 0, noise));
+    ASSERT_EQ(result.holes.size(), 1u);
+    EXPECT_TRUE(result.holes[0].closed) << notes(result);
+    EXPECT_EQ(result.holes[0].fallback, "") << notes(result);
+    EXPECT_NE(result.holes[0].note.find("3 missing edge(s) and a missing corner"),
+              std::string::npos)
+        << notes(result);
+  }
+}
+
 TEST(SliceLoft, MissingEdgeEndingAtTheHoleIsJoinedStraight) {
   const MethodResult result =
       run_loft(generators::make_case("brep/k2/outer/convex/inner-outer/small"));
