@@ -606,6 +606,10 @@ struct LaterAttemptCase {
   const char* step;  ///< the words of the note that name the step
 };
 
+void PrintTo(const LaterAttemptCase& c, std::ostream* os) {
+  *os << c.id << " at " << c.noise << " % noise";
+}
+
 class BrepGuidanceLaterClosingAttempts : public ::testing::TestWithParam<LaterAttemptCase> {};
 
 TEST_P(BrepGuidanceLaterClosingAttempts, CloseTheHoleWithoutIntersections) {
