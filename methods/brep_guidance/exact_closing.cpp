@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <set>
 
 namespace holebench::brep_guidance {
@@ -22,6 +24,7 @@ struct Corner {
 struct PlannedFace {
   int region;
   std::vector<Corner> polygon;
+  std::optional<Plane> plane;  ///< the plane to triangulate in, if not the region's
 };
 
 double mean_edge_length(const Mesh& mesh, const Hole& hole) {
@@ -88,6 +91,22 @@ std::vector<std::vector<int>> split_at_repeated_corners(const std::vector<Corner
 double orientation(const std::array<double, 2>& a, const std::array<double, 2>& b,
                    const std::array<double, 2>& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+// Twice the signed area of the polygon `points` projected onto `plane`, in the plane's frame
+// (u, w) counter-clockwise about its normal (the frame triangulate_planar_polygon uses).
+double twice_signed_area(const std::vector<Point>& points, const Plane& plane) {
+  const Point normal = plane.normal / plane.normal.norm();
+  const Point helper = std::abs(normal[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0);
+  Point u = OpenMesh::cross(normal, helper);
+  u /= u.norm();
+  const Point w = OpenMesh::cross(normal, u);
+  double area = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point a = points[i] - plane.point, b = points[(i + 1) % points.size()] - plane.point;
+    area += OpenMesh::dot(a, u) * OpenMesh::dot(b, w) - OpenMesh::dot(a, w) * OpenMesh::dot(b, u);
+  }
+  return area;
 }
 
 struct PartTriangles {
@@ -173,13 +192,36 @@ PartTriangles triangulate_in_loop_order(const std::vector<std::array<double, 2>>
   return result;
 }
 
-// One attempt at the closing. With `loop_vertices_on_edges`, loop vertices that lie on a
-// rebuilt edge (within the lines' tolerance, strictly between its ends) become corners of that
-// edge instead of the new points near them; the part that passes them twice is then split
-// there into polygons that touch.
-// Without `loop_order`, a part whose Delaunay triangulation fails is not closed.
+// One attempt at the closing: the plan, or the plan with the changes an attempt asks for.
+struct Attempt {
+  // Loop vertices that lie on a rebuilt edge (within the lines' tolerance, strictly between
+  // its ends) become corners of that edge instead of the new points near them; the part that
+  // passes them twice is then split there into polygons that touch.
+  bool loop_vertices_on_edges = false;
+  // A part whose Delaunay triangulation in its face's plane fails is triangulated in the
+  // loop's order (triangulate_in_loop_order); otherwise the attempt fails there.
+  bool loop_order = false;
+  // A part whose Delaunay triangulation in its face's plane fails is first triangulated by a
+  // Delaunay triangulation in its own least-squares plane (the plane of its corners).
+  bool own_plane = false;
+  // k = 3 only: the face (index into the hole's faces) whose part is at most one loop edge
+  // gives its run to a neighbouring face, and the hole is closed as k = 2 on the common line
+  // of the other two faces, without the corner S; -1: not used.
+  int absorbed_face = -1;
+  // The run goes to the previous face (f_{j-1}, whose run it follows) or to the next.
+  bool into_previous = true;
+  // k >= 2: where the whole loop lies in one plane within its faces' noise (the RMS residual
+  // of the loop's least-squares plane at most three times the largest of its faces' planes),
+  // it is one part in that plane, closed like a k = 1 hole, without rebuilt edges.
+  bool one_plane = false;
+};
+
 ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
-                         bool loop_vertices_on_edges, bool loop_order) {
+                         const Attempt& attempt, bool* applicable = nullptr) {
+  const bool loop_vertices_on_edges = attempt.loop_vertices_on_edges;
+  const bool loop_order = attempt.loop_order;
+  if (applicable != nullptr)
+    *applicable = true;
   ClosingResult result;
   const int k = hole.k();
   const double spacing = mean_edge_length(mesh, hole);
@@ -205,8 +247,47 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
   const int n = static_cast<int>(loop.size());
   const double exact = 1e-9 * std::max(1.0, bounding_box_diagonal_of_points(mesh, loop));
 
-  if (k == 1) {
-    PlannedFace face{hole.faces[0], {}};
+  if (attempt.one_plane) {
+    // The faces' common lines are ill-defined where the loop lies in one plane within their
+    // noise (two nearly parallel planes of one segmented face; a face's plane edge-on to the
+    // hole): the whole loop is one part in the loop's own plane. Its faces are those of the
+    // face with the longest run.
+    std::vector<Point> points;
+    for (auto v : loop)
+      points.push_back(mesh.point(v));
+    const PlaneFit fit = fit_plane(points);
+    double noise = 0.0;
+    for (int face : hole.faces)
+      noise = std::max(noise, faces.planes[face].plane.rms_residual);
+    if (k < 2 || !fit.valid || fit.plane.rms_residual > 3.0 * noise) {
+      if (applicable != nullptr)
+        *applicable = false;
+      result.error = "not applicable";
+      return result;
+    }
+    int longest = 0;
+    double longest_length = -1.0;
+    for (int i = 0; i < k; ++i) {
+      double length = 0.0;
+      for (auto h : hole.runs[i])
+        length += mesh.calc_edge_length(h);
+      if (length > longest_length) {
+        longest_length = length;
+        longest = i;
+      }
+    }
+    char residuals[96];
+    std::snprintf(residuals, sizeof residuals, "%.3g of its faces' %.3g", fit.plane.rms_residual,
+                  noise);
+    result.note = "the loop closed as one part in its own least-squares plane (RMS residual " +
+                  std::string(residuals) + "), its faces those of face " +
+                  std::to_string(hole.faces[longest]);
+    PlannedFace face{hole.faces[longest], {}, fit.plane};
+    for (auto v : loop)
+      face.polygon.push_back({v, mesh.point(v)});
+    planned.push_back(std::move(face));
+  } else if (k == 1) {
+    PlannedFace face{hole.faces[0], {}, std::nullopt};
     for (auto v : loop)
       face.polygon.push_back({v, mesh.point(v)});
     planned.push_back(std::move(face));
@@ -265,16 +346,47 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
         backward = (backward + n - 1) % n;
       split[i] = backward;
     }
+    // A face whose part is at most one loop edge (E_j to E_{j+1}) barely borders the hole:
+    // where the three planes' corner S lies beyond that edge, outside the hole, the plan's
+    // rebuilt edges run out to S and back and cross the mesh there. The absorbing attempt
+    // gives that run to a neighbouring face and closes the hole as k = 2 on the common line
+    // of the other two faces (L_b, the line of faces a = j + 1 and b = j + 2), without S:
+    // E_b and, on the run's other side, E_{j+1} (into the previous face b) or E_j (into the
+    // next face a) are the rebuilt edge's ends.
+    int parts = k;
+    std::vector<int> part_faces = hole.faces;
+    if (attempt.absorbed_face >= 0) {
+      const int j = attempt.absorbed_face, a = (j + 1) % k, b = (j + 2) % k;
+      const int run_edges = (split[a] - split[j] + n) % n;
+      if (k != 3 || run_edges > 1 || (!attempt.into_previous && run_edges == 0)) {
+        if (applicable != nullptr)
+          *applicable = false;
+        result.error = "not applicable";
+        return result;
+      }
+      const int receiver = attempt.into_previous ? b : a;
+      result.note = "face " + std::to_string(hole.faces[j]) + "'s run of " +
+                    std::to_string(run_edges) + (run_edges == 1 ? " edge" : " edges") +
+                    " given to face " + std::to_string(hole.faces[receiver]) +
+                    ", closed as k = 2 on the common line of faces " +
+                    std::to_string(hole.faces[a]) + " and " + std::to_string(hole.faces[b]) +
+                    " without the corner S";
+      split = {attempt.into_previous ? split[a] : split[j], split[b]};
+      lines = {lines[b], lines[b]};
+      tolerance = {tolerance[b], tolerance[b]};
+      part_faces = {hole.faces[a], hole.faces[b]};
+      parts = 2;
+    }
     // Q_i: E_i projected onto L_i. The rebuilt edge runs on L_i from Q_i on; its end corner
     // is E_i itself, which is input and stays where it is (on L_i on clean input; off it by
     // the noise otherwise). A new end vertex at Q_i would need a short edge E_i -> Q_i that
     // crosses the rebuilt edge's side whenever noise puts E_i beyond the line, so it is not
     // made.
-    std::vector<Corner> q(k);
-    for (int i = 0; i < k; ++i)
+    std::vector<Corner> q(parts);
+    for (int i = 0; i < parts; ++i)
       q[i] = {loop[split[i]], lines[i].project(mesh.point(loop[split[i]]))};
     // The rebuilt edges' inner points, shared by the two faces along each.
-    std::vector<std::vector<Corner>> edge_points(k);  // from Q_i towards the common end
+    std::vector<std::vector<Corner>> edge_points(parts);  // from Q_i towards the common end
     // The corners strictly between `from` and `to` on L_i: new points at about `spacing`,
     // and (loop_vertices_on_edges) the loop vertices on the segment, without the new points
     // within half a spacing of them.
@@ -309,10 +421,10 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
       return corners;
     };
     std::vector<VertexHandle> ends;  // the E_i: never corners inside a rebuilt edge
-    for (int i = 0; i < k; ++i)
+    for (int i = 0; i < parts; ++i)
       ends.push_back(loop[split[i]]);
     Corner vs;
-    if (k == 3) {
+    if (parts == 3) {
       // v_s is a new vertex at S, unless the loop already passes through the corner (a face
       // whose run lies on its two common lines): then that vertex is v_s.
       const double near = std::min({tolerance[0], tolerance[1], tolerance[2]});
@@ -331,16 +443,16 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
     } else {
       edge_points[1] = edge_corners(1, q[1].position, q[0].position, ends);  // Q_2 to Q_1
     }
-    for (int i = 0; i < k; ++i) {
-      const int next = (i + 1) % k;
-      PlannedFace face{hole.faces[i], {}};
+    for (int i = 0; i < parts; ++i) {
+      const int next = (i + 1) % parts;
+      PlannedFace face{part_faces[i], {}, std::nullopt};
       // The loop from E_i to E_{i+1}, both included.
       for (int j = split[i];; j = (j + 1) % n) {
         face.polygon.push_back({loop[j], mesh.point(loop[j])});
         if (j == split[next])
           break;
       }
-      if (k == 3) {
+      if (parts == 3) {
         face.polygon.insert(face.polygon.end(), edge_points[next].begin(), edge_points[next].end());
         face.polygon.push_back(vs);
         face.polygon.insert(face.polygon.end(), edge_points[i].rbegin(), edge_points[i].rend());
@@ -380,7 +492,8 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
   }
   std::vector<std::vector<std::array<Corner, 3>>> triangles(planned.size());
   for (std::size_t f = 0; f < planned.size(); ++f) {
-    const Plane& plane = faces.planes[planned[f].region].plane;
+    const Plane& plane =
+        planned[f].plane ? *planned[f].plane : faces.planes[planned[f].region].plane;
     const Point normal = plane.normal / plane.normal.norm();
     const Point helper = std::abs(normal[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0);
     Point u = OpenMesh::cross(normal, helper);
@@ -408,24 +521,63 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
                mesh.find_halfedge(ca.vertex, cb.vertex).is_valid();
       };
       std::vector<std::array<int, 3>> chosen;
-      const auto triangulation = triangulate_planar_polygon(points, plane);
-      bool usable = triangulation.ok;
-      for (const auto& t : triangulation.triangles) {
-        for (int e = 0; e < 3 && usable; ++e) {
-          const int a = t[e], b = t[(e + 1) % 3];
-          if ((a + 1) % size != b && (b + 1) % size != a && forbidden(a, b))
-            usable = false;  // a diagonal the mesh or another part already has
+      // Whether a Delaunay triangulation uses no diagonal the mesh or another part has.
+      auto usable_in = [&](const PolygonTriangulation& triangulation) {
+        bool usable = triangulation.ok;
+        for (const auto& t : triangulation.triangles) {
+          for (int e = 0; e < 3 && usable; ++e) {
+            const int a = t[e], b = t[(e + 1) % 3];
+            if ((a + 1) % size != b && (b + 1) % size != a && forbidden(a, b))
+              usable = false;  // a diagonal the mesh or another part already has
+          }
         }
-      }
-      if (usable) {
-        // Counter-clockwise about the normal; the mesh runs against the loop, which is
-        // clockwise about the normal unless the part is turned over in its plane.
+        return usable;
+      };
+      // Counter-clockwise about the plane's normal; the mesh runs against the loop, which is
+      // clockwise about the normal unless the part is turned over in its plane (`loop_area`:
+      // twice the loop's signed area in the plane's frame).
+      auto take = [&](const PolygonTriangulation& triangulation, double loop_area) {
         for (auto t : triangulation.triangles) {
-          if (area > 0.0)
+          if (loop_area > 0.0)
             std::swap(t[1], t[2]);
           chosen.push_back(t);
         }
-      } else {
+      };
+      const auto triangulation = triangulate_planar_polygon(points, plane);
+      const bool usable = usable_in(triangulation);
+      const std::string reason = triangulation.ok
+                                     ? std::string(
+                                           "the Delaunay triangulation used an edge the mesh "
+                                           "already has")
+                                     : triangulation.error;
+      bool own = false;
+      if (!usable && attempt.own_plane) {
+        // The part's own plane: on a segmented curved face or under noise the part can lie
+        // in a plane far from its face's fitted plane (nearly edge-on to it), and its
+        // projection onto the face's plane folds where the projection onto its own does not.
+        const PlaneFit fit = fit_plane(points);
+        if (fit.valid) {
+          const auto in_own_plane = triangulate_planar_polygon(points, fit.plane);
+          if (usable_in(in_own_plane)) {
+            take(in_own_plane, twice_signed_area(points, fit.plane));
+            own = true;
+            const double cosine = std::min(1.0, std::abs(OpenMesh::dot(fit.plane.normal, normal)) /
+                                                    std::max(fit.plane.normal.norm(), 1e-300));
+            char angle[64];
+            std::snprintf(angle, sizeof angle, "%.3g", std::acos(cosine) * 180.0 / std::acos(-1.0));
+            if (!result.note.empty())
+              result.note += "; ";
+            result.note += "face " + std::to_string(planned[f].region) + " (" +
+                           std::to_string(size) +
+                           " corners) triangulated in its own "
+                           "least-squares plane (" +
+                           reason + " in the face's plane), at " + angle + " degrees to the face's";
+          }
+        }
+      }
+      if (usable) {
+        take(triangulation, area);
+      } else if (!own) {
         const PartTriangles fallback =
             loop_order ? triangulate_in_loop_order(flat, forbidden) : PartTriangles{};
         if (!fallback.ok) {
@@ -445,11 +597,8 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
         if (!result.note.empty())
           result.note += "; ";
         result.note += "face " + std::to_string(planned[f].region) + " (" + std::to_string(size) +
-                       " corners) triangulated in the loop's order (" +
-                       (triangulation.ok ? std::string("the Delaunay triangulation used an "
-                                                       "edge the mesh already has")
-                                         : triangulation.error) +
-                       "), folded area " + folded + " of the part's";
+                       " corners) triangulated in the loop's order (" + reason + "), folded area " +
+                       folded + " of the part's";
       }
       for (const auto& t : chosen) {
         triangles[f].push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
@@ -500,37 +649,72 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
 ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole) {
   // First as planned; then with the loop's vertices on the rebuilt edges as its corners (the
   // loop touches the faces' common line between the edge's ends); then with parts whose
-  // projection is not simple triangulated in the loop's order. The first that closes counts;
-  // the error is the first attempt's.
-  ClosingResult first = close_hole(mesh, faces, hole, false, false);
+  // projection is not simple triangulated in the loop's order; then with such parts first
+  // triangulated in their own least-squares planes; then (k = 3) with a face whose part is at
+  // most one loop edge given to a neighbour and the hole closed as k = 2 without S; then
+  // (k >= 2) the loop as one part in its own plane, where it lies in one within its faces'
+  // noise. The first that closes counts; the error is the first attempt's, followed by the
+  // last error of each later kind that applied.
+  ClosingResult first = close_hole(mesh, faces, hole, Attempt{});
   if (first.closed)
     return first;
-  std::string last_error;
-  struct Attempt {
-    bool loop_vertices_on_edges, loop_order;
+  struct Try {
+    Attempt attempt;
     const char* note;
+    const char* error_label;  // the failure reported after the first attempt's, if any
   };
-  for (const Attempt& attempt :
-       {Attempt{true, false, "loop vertices on the rebuilt edges used as its corners"},
-        Attempt{true, true, "loop vertices on the rebuilt edges used as its corners"},
-        Attempt{false, true, ""}}) {
-    if (attempt.loop_vertices_on_edges && hole.k() < 2)
+  const char* on_edges = "loop vertices on the rebuilt edges used as its corners";
+  std::vector<Try> tries{
+      {Attempt{true, false, false}, on_edges, nullptr},
+      {Attempt{true, true, false}, on_edges,
+       "split at the loop's vertices and in the loop's order"},
+      {Attempt{false, true, false}, "", nullptr},
+      {Attempt{false, true, true}, "", nullptr},
+      {Attempt{true, true, true}, on_edges, "in the parts' own planes"},
+  };
+  if (hole.k() == 3) {
+    for (int j = 0; j < 3; ++j) {
+      for (bool into_previous : {true, false}) {
+        for (bool vertices_on_edges : {false, true}) {
+          tries.push_back({Attempt{vertices_on_edges, true, true, j, into_previous},
+                           vertices_on_edges ? on_edges : "",
+                           "with a face's run of at most one edge given to a neighbour (k = 2)"});
+        }
+      }
+    }
+  }
+  if (hole.k() >= 2) {
+    Attempt one_plane{false, true, true};
+    one_plane.one_plane = true;
+    tries.push_back({one_plane, "", "as one part in the loop's plane"});
+  }
+  std::vector<std::pair<std::string, std::string>> errors;  // by label, the last of each
+  for (const Try& t : tries) {
+    if (t.attempt.loop_vertices_on_edges && hole.k() < 2)
       continue;
-    ClosingResult result =
-        close_hole(mesh, faces, hole, attempt.loop_vertices_on_edges, attempt.loop_order);
+    bool applicable = true;
+    ClosingResult result = close_hole(mesh, faces, hole, t.attempt, &applicable);
+    if (!applicable)
+      continue;
     if (!result.closed) {
-      if (attempt.loop_vertices_on_edges && attempt.loop_order)
-        last_error = result.error;
+      if (t.error_label != nullptr) {
+        const auto same = std::find_if(errors.begin(), errors.end(),
+                                       [&](const auto& e) { return e.first == t.error_label; });
+        if (same != errors.end())
+          same->second = result.error;
+        else
+          errors.push_back({t.error_label, result.error});
+      }
       continue;
     }
-    std::string note = attempt.note;
+    std::string note = t.note;
     if (!result.note.empty())
       note += (note.empty() ? "" : "; ") + result.note;
     result.note = note;
     return result;
   }
-  if (!last_error.empty())
-    first.error += "; split at the loop's vertices and in the loop's order: " + last_error;
+  for (const auto& [label, error] : errors)
+    first.error += "; " + label + ": " + error;
   return first;
 }
 

@@ -12,13 +12,18 @@
 //
 // Every closing is kept only if its new faces intersect neither each other nor the mesh
 // within two vertex rings (CGAL, exact predicates). Where the plan fails (a part's
-// projection is not simple, or its triangulation would reuse an edge), two more attempts,
-// in this order: loop
-// vertices that lie on a rebuilt edge become its corners and the part is split where it
-// passes them twice (the loop touches the faces' common line there); then a part that is
-// still not simple in its plane is triangulated in the loop's own order, choosing the
-// triangulation with the least area folded against the polygon in the plane. The note says
-// which was needed.
+// projection is not simple, or its triangulation would reuse an edge, or the closing
+// intersects), more attempts follow, in this order: loop vertices that lie on a rebuilt edge
+// become its corners and the part is split where it passes them twice (the loop touches the
+// faces' common line there); then a part that is still not simple in its plane is
+// triangulated in the loop's own order, choosing the triangulation with the least area
+// folded against the polygon in the plane; then such a part is first triangulated in its own
+// least-squares plane (a part nearly edge-on to its face's fitted plane); then (k = 3) a face
+// whose part is at most one loop edge gives its run to a neighbour and the hole is closed as
+// k = 2 on the other two faces' common line, without S (S lies beyond that edge, outside the
+// hole); then (k >= 2) a loop that lies in one plane within its faces' noise is closed as one
+// part in that plane (nearly parallel planes of one segmented face). The note says which was
+// needed.
 #pragma once
 
 #include "core/mesh.h"
@@ -35,8 +40,9 @@ struct ClosingResult {
   std::size_t new_vertices = 0;
   std::string error;  ///< why the hole could not be closed
   /// How it was closed where the plan alone did not (loop vertices taken as corners of a
-  /// rebuilt edge; a part triangulated in the loop's order, with its folded area); empty
-  /// otherwise.
+  /// rebuilt edge; a part triangulated in the loop's order, with its folded area, or in its
+  /// own plane, with its angle to the face's; a face's run given to a neighbour; the loop as
+  /// one part in its own plane); empty otherwise.
   std::string note;
 };
 
