@@ -31,7 +31,7 @@ namespace holebench::harness {
 /// `crest_max_angle_degrees`, the oracle replaces it: one intervention of kind
 /// "crest_line_direction" each.
 struct OracleOptions {
-  double crest_max_angle_degrees = 5.0;
+  double crest_max_angle_degrees = 15.0;
   double crest_match_edges = 1.0;
 };
 
