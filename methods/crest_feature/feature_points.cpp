@@ -89,6 +89,29 @@ Crossing nearest_edge_crossing(const Mesh& mesh, const Hole& hole, const Point& 
   return best;
 }
 
+// The feature point where the ray from the crest line's end `e` along `t` crosses the
+// boundary (3.4.1): inside the nearest edge, or at its vertex where the crossing lies within
+// `edge_snap_fraction` of it; nullopt where no edge comes within `ray_tolerance_edges` a.
+// Only loop_index, position and edge_parameter are set.
+std::optional<FeaturePoint> edge_candidate(const Mesh& mesh, const Hole& hole, const Point& e,
+                                           const Point& t, const FeaturePointOptions& options) {
+  const double a = hole.average_edge_length;
+  const Crossing x = nearest_edge_crossing(mesh, hole, e, t, -a, options.reach_edges * a);
+  if (x.edge < 0 || x.distance > options.ray_tolerance_edges * a)
+    return std::nullopt;
+  const int n = static_cast<int>(hole.vertices.size());
+  FeaturePoint f;
+  f.loop_index = x.edge;
+  if (x.u >= 1.0 - options.edge_snap_fraction)
+    f.loop_index = (x.edge + 1) % n;
+  else if (x.u > options.edge_snap_fraction)
+    f.edge_parameter = x.u;
+  const Point p = mesh.point(hole.vertices[x.edge]);
+  const Point q = mesh.point(hole.vertices[(x.edge + 1) % n]);
+  f.position = f.edge_parameter ? p + (q - p) * x.u : mesh.point(hole.vertices[f.loop_index]);
+  return f;
+}
+
 // Points of `line` within `radius` of `p`, the point p excluded.
 std::vector<Point> line_points_near(const CrestLine& line, const Point& p, double radius) {
   std::vector<Point> near;
@@ -186,20 +209,9 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
       const double weight = crest.lines[l].mean_curvature * static_cast<double>(near.size());
       if (options.on_boundary_edges) {
         // 3.4.1: where the extrapolated line crosses a boundary edge.
-        const Crossing x = nearest_edge_crossing(mesh, hole, e, tangent, -a, reach);
-        if (x.edge < 0 || x.distance > options.ray_tolerance_edges * a)
-          continue;
-        const int n = static_cast<int>(hole.vertices.size());
-        Candidate c{x.edge, tangent, static_cast<int>(l), weight, Point(0, 0, 0), std::nullopt};
-        if (x.u >= 1.0 - options.edge_snap_fraction) {
-          c.loop_index = (x.edge + 1) % n;
-        } else if (x.u > options.edge_snap_fraction) {
-          c.edge_parameter = x.u;
-        }
-        const Point p = mesh.point(hole.vertices[x.edge]);
-        const Point q = mesh.point(hole.vertices[(x.edge + 1) % n]);
-        c.position = c.edge_parameter ? p + (q - p) * x.u : mesh.point(hole.vertices[c.loop_index]);
-        candidates.push_back(c);
+        if (auto c = edge_candidate(mesh, hole, e, tangent, options))
+          candidates.push_back({c->loop_index, tangent, static_cast<int>(l), weight, c->position,
+                                c->edge_parameter});
         continue;
       }
       // The boundary vertex the extrapolated line passes nearest, ahead of the end.
