@@ -6,6 +6,7 @@
 #include "core/mesh.h"
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,19 @@ struct FeaturePointProposal {
   std::optional<std::array<int, 3>> corner;  ///< indices into feature_points
 };
 
+/// The crest-line paper's correction of crest lines (3.4.2, figures 2 and 9c) at the feature
+/// points of one hole, after the points, pairs and corner are settled: the crest line's
+/// direction as it enters the hole at each feature point (unit; it sets the Catmull-Rom
+/// control points P0 and P3 of equation 3 and a corner's meeting point). A user may replace
+/// any direction; an empty or zero answer keeps the method's.
+struct CrestLineProposal {
+  int hole_index = 0;           ///< index of the hole in the method's detection order
+  Point hole_centroid;          ///< where the hole is, so that an oracle can find its ground truth
+  std::vector<Point> boundary;  ///< the hole's boundary vertices, in loop order
+  std::vector<Point> feature_points;  ///< the feature points (after review_feature_points)
+  std::vector<Point> directions;  ///< per feature point: the crest line's direction into the hole
+};
+
 class User {
  public:
   virtual ~User() = default;
@@ -50,14 +64,26 @@ class User {
     return proposal;
   }
 
+  /// The crest-line paper's crest-line correction (3.4.2): returns the crest lines'
+  /// directions at the feature points of one hole. The default accepts them unchanged.
+  virtual CrestLineProposal review_crest_lines(const CrestLineProposal& proposal) {
+    return proposal;
+  }
+
   /// How many times this user changed what the method would have done alone.
   int interventions() const { return interventions_; }
+  /// The same count by kind (e.g. "feature_point_moved", "crest_line_direction").
+  const std::map<std::string, int>& interventions_by_kind() const { return by_kind_; }
 
  protected:
-  void count_intervention() { ++interventions_; }
+  void count_intervention(const std::string& kind = "other") {
+    ++interventions_;
+    ++by_kind_[kind];
+  }
 
  private:
   int interventions_ = 0;
+  std::map<std::string, int> by_kind_;
 };
 
 /// No human: agrees to everything, accepts every proposal, never intervenes.

@@ -131,6 +131,12 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
   j["noise_percent"] = record.job.noise_percent;
   j["user"] = record.user;
   j["user_interventions"] = record.user_interventions;
+  if (!record.user_interventions_by_kind.empty()) {
+    nlohmann::ordered_json by_kind = nlohmann::ordered_json::object();
+    for (const auto& [kind, count] : record.user_interventions_by_kind)
+      by_kind[kind] = count;
+    j["user_interventions_by_kind"] = by_kind;
+  }
   j["status"] = to_string(record.status);
   j["message"] = record.message;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
@@ -193,6 +199,12 @@ JobRecord record_from_json(const nlohmann::json& j) {
   record.case_kind = value_or<std::string>(j, "case_kind", "");
   record.user = record.job.user;
   record.user_interventions = value_or(j, "user_interventions", 0);
+  if (j.contains("user_interventions_by_kind") && j["user_interventions_by_kind"].is_object()) {
+    for (const auto& [kind, count] : j["user_interventions_by_kind"].items()) {
+      if (count.is_number_integer())
+        record.user_interventions_by_kind[kind] = count.get<int>();
+    }
+  }
   record.status = job_status_from_string(value_or<std::string>(j, "status", "ok"));
   record.message = value_or<std::string>(j, "message", "");
   if (j.contains("metrics") && j["metrics"].is_object()) {

@@ -116,6 +116,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
       method_total += seconds;
     record.stages.push_back({"method", method_total});
     record.user_interventions = user->interventions();
+    record.user_interventions_by_kind = user->interventions_by_kind();
     record.phases = result.phases;
     copy_holes(result, record);
     record.message = result.message;

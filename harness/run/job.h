@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +60,8 @@ struct JobRecord {
   std::string case_kind;
   std::string user = "no_user";
   int user_interventions = 0;
+  /// The same count by kind (User::interventions_by_kind); written only where non-empty.
+  std::map<std::string, int> user_interventions_by_kind;
   JobStatus status = JobStatus::Ok;
   std::string message;
   std::vector<MetricValue> metrics;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <set>
@@ -34,7 +35,7 @@ bool OracleUser::agree_to_closing(const ClosingProposal& proposal) {
     return true;
   const bool agree = case_.holes[hole].labels->expected_decision == Decision::CloseAutomatically;
   if (!agree)
-    count_intervention();
+    count_intervention("closing_refused");
   return agree;
 }
 
@@ -173,12 +174,14 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
   // Interventions: moved, removed and added points.
   for (std::size_t i = 0; i < proposal.feature_points.size(); ++i) {
     const int j = proposed_to_truth[i];
-    if (j < 0 || proposed_vertex[i] != truth_vertex[j])
-      count_intervention();
+    if (j < 0)
+      count_intervention("feature_point_removed");
+    else if (proposed_vertex[i] != truth_vertex[j])
+      count_intervention("feature_point_moved");
   }
   for (int i : truth_to_proposed) {
     if (i < 0)
-      count_intervention();
+      count_intervention("feature_point_added");
   }
   // Pairs made or undone (pairs of removed points went with the points).
   std::set<std::array<int, 2>> proposed_pairs, true_pairs;
@@ -191,10 +194,10 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
     true_pairs.insert(sorted_pair(p[0], p[1]));
   for (const auto& p : proposed_pairs)
     if (!true_pairs.count(p))
-      count_intervention();
+      count_intervention("pair_undone");
   for (const auto& p : true_pairs)
     if (!proposed_pairs.count(p))
-      count_intervention();
+      count_intervention("pair_made");
   // The corner triple named, changed or cleared.
   std::optional<std::set<int>> proposed_corner, true_corner;
   if (proposal.corner) {
@@ -205,7 +208,80 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
   if (truth.corner)
     true_corner = std::set<int>(truth.corner->begin(), truth.corner->end());
   if (proposed_corner != true_corner)
-    count_intervention();
+    count_intervention("corner_triple");
+  return answer;
+}
+
+namespace {
+
+double mean_loop_edge(const std::vector<Point>& loop) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    sum += (loop[i] - loop[(i + 1) % loop.size()]).norm();
+  return loop.empty() ? 0.0 : sum / static_cast<double>(loop.size());
+}
+
+// The direction in which a missing edge leaves its end `from` (index 0 or size - 1 of the
+// polyline): towards the polyline's point at arc length `reach` from that end (or its other
+// end, if shorter), so that a curved crease gives its tangent at the edge-length scale.
+Point leaving_direction(const std::vector<Point>& polyline, bool from_front, double reach) {
+  const int n = static_cast<int>(polyline.size());
+  const int start = from_front ? 0 : n - 1, step = from_front ? 1 : -1;
+  double length = 0.0;
+  int k = start;
+  while (k + step >= 0 && k + step < n && length < reach) {
+    length += (polyline[k + step] - polyline[k]).norm();
+    k += step;
+  }
+  const Point d = polyline[k] - polyline[start];
+  return d.norm() > 0 ? d / d.norm() : d;
+}
+
+}  // namespace
+
+std::optional<Point> true_crease_direction(const HoleTruth& truth, const Point& at,
+                                           double tolerance, double reach) {
+  std::optional<Point> best;
+  double best_distance = tolerance;
+  auto at_corner = [&](const Point& p) {
+    for (const Point& c : truth.missing_corners)
+      if ((c - p).norm() <= 1e-9 * (1.0 + tolerance))
+        return true;
+    return false;
+  };
+  for (const auto& polyline : truth.missing_edges) {
+    if (polyline.size() < 2)
+      continue;
+    for (bool front : {true, false}) {
+      const Point& end = front ? polyline.front() : polyline.back();
+      const double d = (end - at).norm();
+      if (d <= best_distance && !at_corner(end)) {
+        best_distance = d;
+        best = leaving_direction(polyline, front, reach);
+      }
+    }
+  }
+  return best;
+}
+
+CrestLineProposal OracleUser::review_crest_lines(const CrestLineProposal& proposal) {
+  const int hole = nearest_truth_hole(case_, proposal.hole_centroid);
+  if (hole < 0 || proposal.directions.size() != proposal.feature_points.size())
+    return proposal;
+  const double a = mean_loop_edge(proposal.boundary);
+  CrestLineProposal answer = proposal;
+  for (std::size_t i = 0; i < proposal.feature_points.size(); ++i) {
+    const auto truth = true_crease_direction(case_.holes[hole], proposal.feature_points[i],
+                                             options_.crest_match_edges * a, a);
+    if (!truth || truth->norm() == 0.0)
+      continue;  // no missing sharp edge starts here: nothing to correct against
+    const Point& d = proposal.directions[i];
+    const double c = d.norm() > 0 ? OpenMesh::dot(d, *truth) / d.norm() : -1.0;
+    if (std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI <= options_.crest_max_angle_degrees)
+      continue;
+    answer.directions[i] = *truth;
+    count_intervention("crest_line_direction");
+  }
   return answer;
 }
 

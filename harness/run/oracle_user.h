@@ -6,6 +6,7 @@
 #include "methods/user.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace holebench::harness {
@@ -22,16 +23,36 @@ namespace holebench::harness {
 /// one (greedy, nearest first) is matched to it. One intervention each: a matched point
 /// moved to another boundary vertex, a proposed point removed, a true point added, a pair
 /// made or undone, the corner triple named, changed or cleared.
+///
+/// Crest lines (3.4.2, the paper's figures 2 and 9c): at a feature point within
+/// `crest_match_edges` mean boundary edge lengths of a missing sharp edge's end (not a missing
+/// corner), the true direction is the one in which that edge leaves the boundary (towards its
+/// point one mean edge length in). Where the method's direction differs from it by more than
+/// `crest_max_angle_degrees`, the oracle replaces it: one intervention of kind
+/// "crest_line_direction" each.
+struct OracleOptions {
+  double crest_max_angle_degrees = 15.0;
+  double crest_match_edges = 1.0;
+};
+
 class OracleUser final : public User {
  public:
-  explicit OracleUser(const Case& c) : case_(c) {}
+  explicit OracleUser(const Case& c, OracleOptions options = {}) : case_(c), options_(options) {}
   std::string kind() const override { return "oracle"; }
   bool agree_to_closing(const ClosingProposal& proposal) override;
   FeaturePointProposal review_feature_points(const FeaturePointProposal& proposal) override;
+  CrestLineProposal review_crest_lines(const CrestLineProposal& proposal) override;
 
  private:
   const Case& case_;
+  OracleOptions options_;
 };
+
+/// The unit direction in which the missing sharp edge of `truth` whose end (not a missing
+/// corner) lies nearest `at`, within `tolerance`, leaves that end: towards its point at arc
+/// length `reach` (or its other end). nullopt where no such end is near.
+std::optional<Point> true_crease_direction(const HoleTruth& truth, const Point& at,
+                                           double tolerance, double reach);
 
 /// The index of the ground-truth hole nearest `point` (by its removed faces' centroids in
 /// the complete model), or -1 if the case has no hole.

@@ -1,6 +1,8 @@
 #include "methods/crest_feature/crest_feature.h"
 
 #include "core/stopwatch.h"
+#include "methods/crest_feature/boundary_edge_split.h"
+#include "methods/crest_feature/crest_line_correction.h"
 #include "methods/crest_feature/hole_identification.h"
 #include "methods/crest_feature/hole_partitioning.h"
 
@@ -32,7 +34,7 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
          partition_seconds = 0.0, filling_seconds = 0.0;
   std::size_t closed = 0;
   for (std::size_t i = 0; i < holes.size(); ++i) {
-    const Hole& hole = holes[i];
+    Hole hole = holes[i];
     const auto hole_start = Clock::now();
     HoleReport report;
     report.hole_index = static_cast<int>(i);
@@ -40,13 +42,20 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     report.centroid = hole.centroid;
 
     start = Clock::now();
-    const HoleFeatures detected = detect_feature_points(holed, hole, crest, options.feature_points);
+    HoleFeatures detected = detect_feature_points(holed, hole, crest, options.feature_points);
+    // 3.4.1: the points inside boundary edges become vertices of the hole's loop.
+    const InsertedFeaturePoints on_edges = insert_feature_points(result.repaired, hole, detected);
+    hole = on_edges.hole;
+    detected = on_edges.features;
     feature_seconds += seconds_since(start);
 
     start = Clock::now();
     const int before = user.interventions();
-    const HoleFeatures features = review_feature_points(holed, hole, static_cast<int>(i), crest,
-                                                        detected, user, options.feature_points);
+    const HoleFeatures reviewed = review_feature_points(
+        result.repaired, hole, static_cast<int>(i), crest, detected, user, options.feature_points);
+    const CrestLineCorrection correction =
+        review_crest_lines(result.repaired, hole, static_cast<int>(i), reviewed, user);
+    const HoleFeatures& features = correction.features;
     user_seconds += seconds_since(start);
 
     start = Clock::now();
@@ -88,15 +97,18 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
       fallbacks += s.ok && !s.fallback.empty() ? 1 : 0;
     report.note = fmt::format(
         "feature points detected {} used {}; pairs {}; corner {}; user interventions {}; "
-        "feature lines {}; sub-holes {}; projection fallbacks {}",
+        "crest lines corrected {}; feature lines {}; sub-holes {}; projection fallbacks {}",
         detected.points.size(), features.points.size(), features.pairs.size(),
-        features.corner ? "yes" : "no", user.interventions() - before, lines.lines.size(),
-        partition.sub_holes.size(), fallbacks);
+        features.corner ? "yes" : "no", user.interventions() - before, correction.corrected,
+        lines.lines.size(), partition.sub_holes.size(), fallbacks);
     int planarity_chords = 0;
     for (const auto& s : filling.sub_holes)
       planarity_chords += s.chords;
     if (planarity_chords > 0)
       report.note += fmt::format("; sub-holes cut for equation 6 by {} chord(s)", planarity_chords);
+    if (on_edges.inserted > 0)
+      report.note +=
+          fmt::format("; feature points inserted into boundary edges {}", on_edges.inserted);
     if (filling.split_chords > 0)
       report.note += fmt::format("; chords split {}", filling.split_chords);
     if (!hole.islands.empty())

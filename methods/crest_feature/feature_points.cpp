@@ -50,7 +50,67 @@ struct Candidate {
   Point tangent;
   int line;
   double weight;  // the line's strength near the hole
+  Point position;
+  std::optional<double> edge_parameter;  // inside the edge loop_index -> loop_index + 1
 };
+
+// Where the ray e + s t (s in [s_min, s_max]) passes a boundary edge nearest: the edge (its
+// start's loop index), its parameter u in [0, 1] and the distance; the closest points of the
+// ray's line and the segment, clamped to both. Of equally near edges (a ray that crosses the
+// boundary, then the far side of a small hole) the first along the ray.
+struct Crossing {
+  int edge = -1;
+  double u = 0.0;
+  double distance = std::numeric_limits<double>::infinity();
+  double s = 0.0;  // along the ray
+};
+
+Crossing nearest_edge_crossing(const Mesh& mesh, const Hole& hole, const Point& e, const Point& t,
+                               double s_min, double s_max) {
+  Crossing best;
+  const int n = static_cast<int>(hole.vertices.size());
+  for (int i = 0; i < n; ++i) {
+    const Point p = mesh.point(hole.vertices[i]);
+    const Point d = mesh.point(hole.vertices[(i + 1) % n]) - p;
+    const double c = OpenMesh::dot(d, d);
+    if (!(c > 0.0))
+      continue;
+    const Point r = e - p;
+    const double b = OpenMesh::dot(t, d), rt = OpenMesh::dot(t, r), rd = OpenMesh::dot(d, r);
+    const double det = c - b * b;  // t is unit
+    double u = det > 1e-12 * c ? std::clamp((rd - rt * b) / det, 0.0, 1.0) : 0.5;
+    const double s = std::clamp(u * b - rt, s_min, s_max);
+    u = std::clamp(OpenMesh::dot(e + t * s - p, d) / c, 0.0, 1.0);
+    const double distance = (e + t * s - (p + d * u)).norm();
+    const double tie = 1e-9 * std::sqrt(c);
+    if (distance < best.distance - tie || (distance <= best.distance + tie && s < best.s))
+      best = {i, u, distance, s};
+  }
+  return best;
+}
+
+// The feature point where the ray from the crest line's end `e` along `t` crosses the
+// boundary (3.4.1): inside the nearest edge, or at its vertex where the crossing lies within
+// `edge_snap_fraction` of it; nullopt where no edge comes within `ray_tolerance_edges` a.
+// Only loop_index, position and edge_parameter are set.
+std::optional<FeaturePoint> edge_candidate(const Mesh& mesh, const Hole& hole, const Point& e,
+                                           const Point& t, const FeaturePointOptions& options) {
+  const double a = hole.average_edge_length;
+  const Crossing x = nearest_edge_crossing(mesh, hole, e, t, -a, options.reach_edges * a);
+  if (x.edge < 0 || x.distance > options.ray_tolerance_edges * a)
+    return std::nullopt;
+  const int n = static_cast<int>(hole.vertices.size());
+  FeaturePoint f;
+  f.loop_index = x.edge;
+  if (x.u >= 1.0 - options.edge_snap_fraction)
+    f.loop_index = (x.edge + 1) % n;
+  else if (x.u > options.edge_snap_fraction)
+    f.edge_parameter = x.u;
+  const Point p = mesh.point(hole.vertices[x.edge]);
+  const Point q = mesh.point(hole.vertices[(x.edge + 1) % n]);
+  f.position = f.edge_parameter ? p + (q - p) * x.u : mesh.point(hole.vertices[f.loop_index]);
+  return f;
+}
 
 // Points of `line` within `radius` of `p`, the point p excluded.
 std::vector<Point> line_points_near(const CrestLine& line, const Point& p, double radius) {
@@ -146,6 +206,14 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
       const Point tangent = run_out_direction(near, e, 0.5 * a);
       if (tangent.norm() == 0.0)
         continue;
+      const double weight = crest.lines[l].mean_curvature * static_cast<double>(near.size());
+      if (options.on_boundary_edges) {
+        // 3.4.1: where the extrapolated line crosses a boundary edge.
+        if (auto c = edge_candidate(mesh, hole, e, tangent, options))
+          candidates.push_back({c->loop_index, tangent, static_cast<int>(l), weight, c->position,
+                                c->edge_parameter});
+        continue;
+      }
       // The boundary vertex the extrapolated line passes nearest, ahead of the end.
       int best = -1;
       double best_distance = options.ray_tolerance_edges * a;
@@ -163,8 +231,8 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
       if (best < 0)
         continue;
       // The tangent into the hole is the line's direction as it runs out.
-      candidates.push_back({best, tangent, static_cast<int>(l),
-                            crest.lines[l].mean_curvature * static_cast<double>(near.size())});
+      candidates.push_back({best, tangent, static_cast<int>(l), weight,
+                            mesh.point(hole.vertices[best]), std::nullopt});
     }
   }
   // Merge candidates that are one feature point: the stronger line wins.
@@ -173,19 +241,21 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
   });
   HoleFeatures features;
   for (const auto& c : candidates) {
-    const Point p = mesh.point(hole.vertices[c.loop_index]);
+    const Point p = c.position;
     bool merged = false;
     for (const auto& kept : features.points) {
       merged = merged || (kept.position - p).norm() <= options.merge_edges * a;
     }
     if (merged)
       continue;
-    features.points.push_back({c.loop_index, p, c.tangent, c.line});
+    features.points.push_back({c.loop_index, p, c.edge_parameter, c.tangent, c.line});
   }
   // Loop order, so that the result does not depend on the strengths' ties.
-  std::sort(
-      features.points.begin(), features.points.end(),
-      [](const FeaturePoint& x, const FeaturePoint& y) { return x.loop_index < y.loop_index; });
+  std::sort(features.points.begin(), features.points.end(),
+            [](const FeaturePoint& x, const FeaturePoint& y) {
+              return x.loop_index + x.edge_parameter.value_or(0.0) <
+                     y.loop_index + y.edge_parameter.value_or(0.0);
+            });
 
   // The automatic rule (no user): a corner triple first where one fits better than any
   // pair among its points, then pairs, best first.

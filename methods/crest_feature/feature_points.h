@@ -31,11 +31,24 @@ struct FeaturePointOptions {
   /// within this angle (degrees) of their least-squares meeting point inside the hole, and
   /// fit it better than any pair among them.
   double corner_max_angle_degrees = 25.0;
+  /// 3.4.1: a detected feature point is where the extrapolated crest line crosses a boundary
+  /// edge (the point of the edge nearest the ray, within `ray_tolerance_edges`), inserted
+  /// into that edge (boundary_edge_split.h). Off (the default): the boundary vertex nearest
+  /// the ray. Off because on, the moved points change the partition of some holes, whose
+  /// planarity cuts then give self-intersecting patches (crease/fandisk/2 without a user:
+  /// 12 face pairs; docs/crest_feature.md).
+  bool on_boundary_edges = false;
+  /// A crossing within this fraction of the edge's length from one of its vertices is that
+  /// vertex (no sliver triangles).
+  double edge_snap_fraction = 0.2;
 };
 
 struct FeaturePoint {
   int loop_index = 0;  ///< index into Hole::vertices
   Point position{0, 0, 0};
+  /// Set where the point lies inside the boundary edge from vertex `loop_index` to the next
+  /// (the edge's parameter in (0, 1)), until it is inserted there (insert_feature_points).
+  std::optional<double> edge_parameter;
   Point tangent{0, 0, 0};  ///< unit: the crest line's direction as it enters the hole
   int crest_line = -1;     ///< index into CrestLines::lines; -1 none
 };
