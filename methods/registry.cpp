@@ -4,6 +4,7 @@
 #include "methods/cgal_triangulate/cgal_triangulate.h"
 #include "methods/crest_feature/crest_feature.h"
 #include "methods/liepa_cgal/liepa_cgal.h"
+#include "methods/occt_fill/occt_fill.h"
 #include "methods/slice_loft/slice_loft.h"
 
 #include <stdexcept>
@@ -18,6 +19,7 @@ std::vector<std::unique_ptr<Method>> make_all_methods() {
   methods.push_back(std::make_unique<SliceLoftMethod>(SliceLoftMethod::direct()));
   methods.push_back(std::make_unique<CrestFeatureMethod>());
   methods.push_back(std::make_unique<CgalTriangulateMethod>());
+  methods.push_back(std::make_unique<OcctFillMethod>());
   return methods;
 }
 
