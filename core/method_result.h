@@ -5,6 +5,7 @@
 #include "core/case.h"
 #include "core/mesh.h"
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +25,15 @@ struct GuidanceArrow {
   Point position{0.0, 0.0, 0.0};
   Point direction{0.0, 0.0, -1.0};
 };
+
+/// Whether the arrow is defined: finite coordinates and a non-zero direction.
+inline bool is_finite(const GuidanceArrow& arrow) {
+  for (int k = 0; k < 3; ++k) {
+    if (!std::isfinite(arrow.position[k]) || !std::isfinite(arrow.direction[k]))
+      return false;
+  }
+  return arrow.direction.sqrnorm() > 0.0;
+}
 
 /// What a method did with one boundary loop of its input.
 struct HoleReport {

@@ -206,12 +206,16 @@ void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptio
   arrow_options.search_directions = options.arrow_search_directions;
   arrow_options.surface_tolerance = 1e-7 * diagonal;
   std::unique_ptr<embree::TriangleScene> holed_scene;
-  std::size_t arrows = 0, outside = 0, shaft_free = 0;
+  std::size_t arrows = 0, outside = 0, shaft_free = 0, undefined = 0;
   double visible = 0.0, best = 0.0, error = 0.0;
   for (std::size_t i = 0; i < result.holes.size(); ++i) {
     const auto& report = result.holes[i];
     if (!report.arrow || matches[i].truth < 0)
       continue;
+    if (!is_finite(*report.arrow)) {
+      ++undefined;  // no ray can be cast along it; counted, not measured
+      continue;
+    }
     const auto& truth = c.holes[matches[i].truth];
     const auto samples = embree::sample_faces(c.complete, truth.removed_faces, arrow_options);
     if (samples.points.empty())
@@ -227,6 +231,8 @@ void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptio
     best += q.best_visible_fraction;
     error += q.direction_error_deg;
   }
+  if (undefined > 0)
+    out.add_count("arrows_undefined_count", undefined);
   if (arrows == 0)
     return;
   out.add_count("arrows_count", arrows);

@@ -42,6 +42,7 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
   classification_options.figure_3_rule = options.figure_3_rule;
   double classify_seconds = 0.0, close_seconds = 0.0, guide_seconds = 0.0;
   std::size_t failed = 0;
+  std::size_t without_arrow = 0;  // guided holes whose arrow is undefined
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const Hole& hole = holes[i];
     const auto hole_start = Clock::now();
@@ -87,7 +88,16 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
     }
     if (guide) {
       start = Clock::now();
-      report.arrow = guidance_arrow(holed, faces, hole, c, d);
+      const GuidanceArrow arrow = guidance_arrow(holed, faces, hole, c, d);
+      if (is_finite(arrow)) {
+        report.arrow = arrow;
+      } else {
+        // Equation 5's fan has no normal where the loop's vector area is zero (a loop that
+        // runs around a pin or a bar): the paper's arrow is undefined there.
+        report.note += std::string(report.note.empty() ? "" : "; ") +
+                       "no guidance arrow: the hole's triangle fan (equation 5) has no normal";
+        ++without_arrow;
+      }
       guide_seconds += seconds_since(start);
     }
     report.seconds = seconds_since(hole_start);
@@ -96,9 +106,13 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
   result.phases.push_back({"classification (figure 3, equations 1-2)", classify_seconds});
   result.phases.push_back({"exact closing", close_seconds});
   result.phases.push_back({"guidance (equations 3-5)", guide_seconds});
-  result.status = failed == 0 ? MethodStatus::Ok : MethodStatus::Partial;
+  result.status = failed == 0 && without_arrow == 0 ? MethodStatus::Ok : MethodStatus::Partial;
   if (failed > 0)
     result.message = std::to_string(failed) + " closable holes could not be closed";
+  if (without_arrow > 0) {
+    result.message += std::string(result.message.empty() ? "" : "; ") +
+                      std::to_string(without_arrow) + " hole(s) without a guidance arrow";
+  }
   return result;
 }
 

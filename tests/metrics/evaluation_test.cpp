@@ -124,6 +124,25 @@ TEST(Evaluation, ArrowsAndClassificationsAreJudged) {
   EXPECT_EQ(e.find("arrow_direction_error_deg")->value, 0.0);
 }
 
+// An arrow with a NaN direction (a zero fan normal, as on a loop around a pin) cannot be ray
+// cast: it is counted as undefined, not judged, and the evaluation does not abort in Embree.
+TEST(Evaluation, UndefinedArrowIsCountedNotCast) {
+  const Case c = generators::make_case("brep/k1/inner/small");
+  MethodResult result;
+  result.repaired = c.input;
+  HoleReport report;
+  report.centroid = loop_centroid(c.input, find_boundary_loops(c.input)[0]);
+  const Point zero(0.0, 0.0, 0.0);
+  report.arrow = GuidanceArrow{report.centroid, zero / zero.norm()};
+  EXPECT_FALSE(is_finite(*report.arrow));
+  result.holes.push_back(report);
+  const Evaluation e = evaluate(c, result);
+  ASSERT_TRUE(has(e, "arrows_undefined_count"));
+  EXPECT_EQ(e.find("arrows_undefined_count")->value, 1.0);
+  EXPECT_FALSE(has(e, "arrows_count"));
+  EXPECT_FALSE(has(e, "arrow_visible_fraction"));
+}
+
 // fallback_holes_fraction = reports with a fallback / reports: 1 of 4 is 0.25, none is 0, and
 // without hole reports the metric is absent (it does not apply).
 TEST(Evaluation, FallbackHolesFractionCountsTheReportsWithAStandIn) {
