@@ -1,14 +1,14 @@
 #include "methods/slice_loft/holes_and_islands.h"
 
+#include "core/polygon_2d.h"
+
 #include <cmath>
 #include <limits>
 
 namespace holebench::slice_loft {
 namespace {
 
-struct Vec2 {
-  double x = 0.0, y = 0.0;
-};
+using Vec2 = Point2d;
 Vec2 operator-(Vec2 a, Vec2 b) {
   return {a.x - b.x, a.y - b.y};
 }
@@ -29,23 +29,6 @@ struct PlaneFrame {
     return {OpenMesh::dot(d, u), OpenMesh::dot(d, v)};
   }
 };
-
-bool inside_polygon(const std::vector<Vec2>& polygon, Vec2 p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2 a = polygon[i], b = polygon[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
-      inside = !inside;
-  }
-  return inside;
-}
-
-double signed_area(const std::vector<Vec2>& polygon) {
-  double area = 0.0;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-    area += cross(polygon[j], polygon[i]);
-  return 0.5 * area;
-}
 
 Plane plane_of_maximum_span(const Mesh& mesh, const std::vector<VertexHandle>& vertices) {
   std::vector<Point> points;
@@ -77,7 +60,7 @@ std::vector<Vec2> develop_contour(const Mesh& mesh, const Contour& contour,
     projected.push_back(frame.project(mesh.point(vs[i])));
     perimeter += (mesh.point(vs[(i + 1) % vs.size()]) - mesh.point(vs[i])).norm();
   }
-  const double sense = signed_area(projected) >= 0.0 ? 1.0 : -1.0;
+  const double sense = signed_area_2d(projected) >= 0.0 ? 1.0 : -1.0;
   const double radius = perimeter / (2.0 * M_PI);
   std::vector<Vec2> developed;
   double angle = 0.0;
@@ -128,7 +111,7 @@ bool is_island(const Mesh& mesh, const Contour& contour) {
   const Vec2 dir{(db.x - da.x) / c, (db.y - da.y) / c};
   const Vec2 dx{da.x + t * dir.x - side * height * dir.y, da.y + t * dir.y + side * height * dir.x};
   const Vec2 centroid{(da.x + db.x + dx.x) / 3.0, (da.y + db.y + dx.y) / 3.0};
-  return inside_polygon(developed, centroid);
+  return inside_polygon_2d(developed, centroid);
 }
 
 HolesAndIslands identify_holes_and_islands(const Mesh& mesh,
@@ -180,7 +163,7 @@ HolesAndIslands identify_holes_and_islands(const Mesh& mesh,
       for (auto v : outer.vertices)
         polygon.push_back(frame.project(mesh.point(v)));
       const double size = hole.box.diagonal();
-      if (!inside_polygon(polygon, frame.project(centroid)) ||
+      if (!inside_polygon_2d(polygon, frame.project(centroid)) ||
           std::abs(outer.span_plane.signed_distance(centroid)) > size)
         continue;
       if (!owner || size < owner->box.diagonal())

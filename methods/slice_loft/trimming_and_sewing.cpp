@@ -2,6 +2,7 @@
 // constrained Delaunay (methods/common/planar_polygon_triangulation.h).
 #include "methods/slice_loft/trimming_and_sewing.h"
 
+#include "core/polygon_2d.h"
 #include "methods/common/planar_polygon_triangulation.h"
 #include "methods/slice_loft/developed_disc.h"
 
@@ -15,38 +16,7 @@
 namespace holebench::slice_loft {
 namespace {
 
-struct Vec2 {
-  double x = 0.0, y = 0.0;
-};
-
-bool inside(const std::vector<Vec2>& polygon, Vec2 p) {
-  bool in = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2 a = polygon[i], b = polygon[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
-      in = !in;
-  }
-  return in;
-}
-
-double distance_to_loop(const std::vector<Vec2>& loop, Vec2 p) {
-  double best = 1e300;
-  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-    const double dx = loop[i].x - loop[j].x, dy = loop[i].y - loop[j].y;
-    const double len2 = dx * dx + dy * dy;
-    double t = len2 > 0 ? ((p.x - loop[j].x) * dx + (p.y - loop[j].y) * dy) / len2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    best = std::min(best, std::hypot(loop[j].x + t * dx - p.x, loop[j].y + t * dy - p.y));
-  }
-  return best;
-}
-
-double signed_area(const std::vector<Vec2>& loop) {
-  double area = 0.0;
-  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
-    area += loop[j].x * loop[i].y - loop[i].x * loop[j].y;
-  return 0.5 * area;
-}
+using Vec2 = Point2d;
 
 }  // namespace
 
@@ -233,14 +203,14 @@ PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const P
   const double spacing = options.spacing_edges * edge_length * spacing_scale;
   const double clearance = options.clearance * spacing;
   auto admissible = [&](Vec2 p) {
-    if (!inside(loops[0], p))
+    if (!inside_polygon_2d(loops[0], p))
       return false;
     for (std::size_t k = 1; k < loops.size(); ++k) {
-      if (inside(loops[k], p))
+      if (inside_polygon_2d(loops[k], p))
         return false;
     }
     for (const auto& loop : loops) {
-      if (distance_to_loop(loop, p) < clearance)
+      if (distance_to_polygon_2d(loop, p) < clearance)
         return false;
     }
     return true;
@@ -366,7 +336,7 @@ PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const P
   auto renumber = [&](int k) {
     return k < polygon_points ? polygon.node_index[k] : k - polygon_points + node_count;
   };
-  const bool flip = signed_area(loops[0]) < 0.0;
+  const bool flip = signed_area_2d(loops[0]) < 0.0;
   for (auto tri : facets.triangles) {
     if (flip)
       std::swap(tri[1], tri[2]);
