@@ -1,5 +1,6 @@
 #include "methods/brep_guidance/exact_closing.h"
 
+#include "core/polygon.h"
 #include "methods/common/patch_intersections.h"
 #include "methods/common/planar_polygon_triangulation.h"
 
@@ -91,22 +92,6 @@ std::vector<std::vector<int>> split_at_repeated_corners(const std::vector<Corner
 double orientation(const std::array<double, 2>& a, const std::array<double, 2>& b,
                    const std::array<double, 2>& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-}
-
-// Twice the signed area of the polygon `points` projected onto `plane`, in the plane's frame
-// (u, w) counter-clockwise about its normal (the frame triangulate_planar_polygon uses).
-double twice_signed_area(const std::vector<Point>& points, const Plane& plane) {
-  const Point normal = plane.normal / plane.normal.norm();
-  const Point helper = std::abs(normal[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0);
-  Point u = OpenMesh::cross(normal, helper);
-  u /= u.norm();
-  const Point w = OpenMesh::cross(normal, u);
-  double area = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point a = points[i] - plane.point, b = points[(i + 1) % points.size()] - plane.point;
-    area += OpenMesh::dot(a, u) * OpenMesh::dot(b, w) - OpenMesh::dot(a, w) * OpenMesh::dot(b, u);
-  }
-  return area;
 }
 
 struct PartTriangles {
@@ -559,7 +544,8 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
         if (fit.valid) {
           const auto in_own_plane = triangulate_planar_polygon(points, fit.plane);
           if (usable_in(in_own_plane)) {
-            take(in_own_plane, twice_signed_area(points, fit.plane));
+            // Only the sign counts: Newell's normal points the way the loop runs counter-clockwise.
+            take(in_own_plane, OpenMesh::dot(newell_normal(points), fit.plane.normal));
             own = true;
             const double cosine = std::min(1.0, std::abs(OpenMesh::dot(fit.plane.normal, normal)) /
                                                     std::max(fit.plane.normal.norm(), 1e-300));

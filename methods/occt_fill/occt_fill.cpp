@@ -3,6 +3,7 @@
 #include "core/boundary_loops.h"
 #include "core/plane_fit.h"
 #include "core/polygon.h"
+#include "core/polygon_2d.h"
 #include "core/stopwatch.h"
 #include "methods/common/planar_polygon_triangulation.h"
 
@@ -34,6 +35,7 @@ struct HoleLoop {
   std::vector<Point> points;
   double length = 0.0;
   Point newell{0.0, 0.0, 0.0};
+  Point centroid{0.0, 0.0, 0.0};
   double diameter = 0.0;
 };
 
@@ -60,6 +62,7 @@ HoleLoop make_hole_loop(const Mesh& mesh, const BoundaryLoop& loop) {
   hole.points = loop_points(mesh, loop);
   hole.length = loop_length(mesh, loop);
   hole.newell = newell_normal(hole.points);
+  hole.centroid = loop_centroid(mesh, loop);
   for (const Point& a : hole.points) {
     for (const Point& b : hole.points)
       hole.diameter = std::max(hole.diameter, (a - b).norm());
@@ -230,16 +233,18 @@ std::size_t add_constraints(const Mesh& mesh, const HoleLoop& loop, int budget, 
 /// Interior points of the region inside `loops[0]` and outside the others, on a square grid
 /// of `spacing`, each at least half a spacing from every loop edge.
 std::vector<Point2> interior_grid(const std::vector<std::vector<Point2>>& loops, double spacing) {
-  auto inside = [](const std::vector<Point2>& loop, const Point2& p) {
-    bool in = false;
-    for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-      const Point2 &a = loop[i], &b = loop[j];
-      if ((a[1] > p[1]) != (b[1] > p[1]) &&
-          p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
-        in = !in;
-    }
-    return in;
+  std::vector<std::vector<Point2d>> polygons;
+  for (const auto& loop : loops) {
+    polygons.emplace_back();
+    for (const Point2& p : loop)
+      polygons.back().push_back({p[0], p[1]});
+  }
+  auto inside = [&](std::size_t l, const Point2& p) {
+    return inside_polygon_2d(polygons[l], {p[0], p[1]});
   };
+  // Not core's distance_to_polygon_2d: that one measures along each edge from its other end,
+  // and grid points lie exactly half a spacing from axis-aligned edges, where a last-bit
+  // difference would move a point in or out of the patch.
   auto distance_to_loop = [](const std::vector<Point2>& loop, const Point2& p) {
     double best = std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -266,11 +271,11 @@ std::vector<Point2> interior_grid(const std::vector<std::vector<Point2>>& loops,
   for (double u = lo[0] + 0.5 * spacing; u < hi[0]; u += spacing) {
     for (double v = lo[1] + 0.5 * spacing; v < hi[1]; v += spacing) {
       const Point2 p{u, v};
-      if (!inside(loops[0], p))
+      if (!inside(0, p))
         continue;
       bool keep = true;
       for (std::size_t l = 0; l < loops.size() && keep; ++l) {
-        keep = distance_to_loop(loops[l], p) >= 0.5 * spacing && (l == 0 || !inside(loops[l], p));
+        keep = distance_to_loop(loops[l], p) >= 0.5 * spacing && (l == 0 || !inside(l, p));
       }
       if (keep)
         points.push_back(p);
@@ -495,10 +500,7 @@ MethodResult fill_holes_occt_plate(const Mesh& holed, const OcctFillOptions& opt
     report.hole_index = static_cast<int>(g);
     const HoleLoop& outer = loops[groups[g].outer];
     report.loop_size = outer.points.size();
-    Point centroid(0.0, 0.0, 0.0);
-    for (const Point& p : outer.points)
-      centroid += p;
-    report.centroid = centroid / static_cast<double>(outer.points.size());
+    report.centroid = outer.centroid;
     const std::string open = fill_hole(mesh, loops, groups[g], options, report);
     report.closed = open.empty();
     if (!report.closed)
