@@ -33,6 +33,13 @@ struct FeaturePointProposal {
   std::vector<Point> feature_points;         ///< on the boundary (each one of `boundary`)
   std::vector<std::array<int, 2>> pairs;     ///< indices into feature_points
   std::optional<std::array<int, 3>> corner;  ///< indices into feature_points
+  /// Not in the paper, whose user names one corner triple: the project's corner graph (see
+  /// docs/crest_feature.md). Further missing corners inside the hole, each given by the
+  /// feature points (two or more; indices into feature_points) whose lines end at it ...
+  std::vector<std::vector<int>> more_corners;
+  /// ... and feature lines between two corners: indices into the hole's corners, the triple
+  /// `corner` first where there is one, then `more_corners` in order.
+  std::vector<std::array<int, 2>> corner_links;
 };
 
 /// The crest-line paper's correction of crest lines (3.4.2, figures 2 and 9c) at the feature

@@ -45,13 +45,17 @@ namespace {
 // the pairs (both ends of one edge) and the corner triple (the far ends of the edges that
 // meet at a missing corner). Polylines that continue each other (they meet at a point that
 // is no missing corner) are joined first.
+// With the corner graph (not in the paper): every further missing corner with two or more
+// edges reaching the boundary, and the edges between two such corners.
 struct TrueFeatures {
   std::vector<Point> points;
   std::vector<std::array<int, 2>> pairs;
   std::optional<std::array<int, 3>> corner;
+  std::vector<std::vector<int>> more_corners;
+  std::vector<std::array<int, 2>> corner_links;
 };
 
-TrueFeatures true_features(const HoleTruth& truth, double tolerance) {
+TrueFeatures true_features(const HoleTruth& truth, double tolerance, bool corner_graph) {
   auto same = [&](const Point& a, const Point& b) { return (a - b).norm() <= tolerance; };
   auto at_corner = [&](const Point& p) -> int {
     for (std::size_t i = 0; i < truth.missing_corners.size(); ++i) {
@@ -84,10 +88,14 @@ TrueFeatures true_features(const HoleTruth& truth, double tolerance) {
   }
   TrueFeatures result;
   std::vector<std::vector<int>> corner_ends(truth.missing_corners.size());
+  std::vector<std::array<int, 2>> between_corners;
   for (const auto& e : ends) {
     const int c0 = at_corner(e[0]), c1 = at_corner(e[1]);
-    if (c0 >= 0 && c1 >= 0)
-      continue;  // an edge between two missing corners meets no boundary
+    if (c0 >= 0 && c1 >= 0) {  // an edge between two missing corners meets no boundary
+      if (c0 != c1)
+        between_corners.push_back({c0, c1});
+      continue;
+    }
     if (c0 < 0 && c1 < 0) {
       const int i = static_cast<int>(result.points.size());
       result.points.push_back(e[0]);
@@ -98,9 +106,26 @@ TrueFeatures true_features(const HoleTruth& truth, double tolerance) {
     corner_ends[c0 >= 0 ? c0 : c1].push_back(static_cast<int>(result.points.size()));
     result.points.push_back(c0 >= 0 ? e[1] : e[0]);
   }
-  for (const auto& triple : corner_ends) {
-    if (triple.size() == 3 && !result.corner)
+  std::vector<int> named(corner_ends.size(), -1);  // truth corner -> index among the named
+  for (std::size_t c = 0; c < corner_ends.size(); ++c) {
+    const auto& triple = corner_ends[c];
+    if (triple.size() == 3 && !result.corner) {
       result.corner = std::array<int, 3>{triple[0], triple[1], triple[2]};
+      named[c] = 0;
+    }
+  }
+  if (!corner_graph)
+    return result;
+  int count = result.corner ? 1 : 0;
+  for (std::size_t c = 0; c < corner_ends.size(); ++c) {
+    if (named[c] < 0 && corner_ends[c].size() >= 2) {
+      result.more_corners.push_back(corner_ends[c]);
+      named[c] = count++;
+    }
+  }
+  for (const auto& [c0, c1] : between_corners) {
+    if (named[c0] >= 0 && named[c1] >= 0)
+      result.corner_links.push_back({named[c0], named[c1]});
   }
   return result;
 }
@@ -134,7 +159,8 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
         (proposal.boundary[i] - proposal.boundary[(i + 1) % proposal.boundary.size()]).norm();
   }
   mean_edge /= static_cast<double>(proposal.boundary.size());
-  const TrueFeatures truth = true_features(case_.holes[hole], 1e-9 * (1.0 + mean_edge));
+  const TrueFeatures truth =
+      true_features(case_.holes[hole], 1e-9 * (1.0 + mean_edge), options_.corner_graph);
 
   // The true points as the user would click them: on the proposed boundary.
   std::vector<int> truth_vertex;
@@ -170,6 +196,8 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
     answer.feature_points.push_back(proposal.boundary[v]);
   answer.pairs = truth.pairs;
   answer.corner = truth.corner;
+  answer.more_corners = truth.more_corners;
+  answer.corner_links = truth.corner_links;
 
   // Interventions: moved, removed and added points.
   for (std::size_t i = 0; i < proposal.feature_points.size(); ++i) {
@@ -209,6 +237,12 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
     true_corner = std::set<int>(truth.corner->begin(), truth.corner->end());
   if (proposed_corner != true_corner)
     count_intervention("corner_triple");
+  // The corner graph: each further corner named and each link drawn (the method proposes
+  // none).
+  for (std::size_t i = 0; i < truth.more_corners.size(); ++i)
+    count_intervention("corner_named");
+  for (std::size_t i = 0; i < truth.corner_links.size(); ++i)
+    count_intervention("corner_link");
   return answer;
 }
 

@@ -33,6 +33,11 @@ namespace holebench::harness {
 struct OracleOptions {
   double crest_max_angle_degrees = 15.0;
   double crest_match_edges = 1.0;
+  /// Not in the paper, whose user names one corner triple: the user also names every further
+  /// missing corner that two or more missing edges reach from the boundary (four-edge
+  /// corners, two corners joined by an edge) and draws the edges between such corners
+  /// (FeaturePointProposal::more_corners, corner_links). False: the paper's user step only.
+  bool corner_graph = true;
 };
 
 class OracleUser final : public User {

@@ -106,6 +106,9 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
       planarity_chords += s.chords;
     if (planarity_chords > 0)
       report.note += fmt::format("; sub-holes cut for equation 6 by {} chord(s)", planarity_chords);
+    if (!features.more_corners.empty() || !features.corner_links.empty())
+      report.note += fmt::format("; further corners {}; corner links {}",
+                                 features.more_corners.size(), features.corner_links.size());
     if (on_edges.inserted > 0)
       report.note +=
           fmt::format("; feature points inserted into boundary edges {}", on_edges.inserted);

@@ -19,9 +19,17 @@ Point catmull_rom(const Point& p0, const Point& p1, const Point& p2, const Point
 
 std::optional<Point> meeting_point(const std::array<Point, 3>& at,
                                    const std::array<Point, 3>& direction) {
+  return meeting_point(std::vector<Point>(at.begin(), at.end()),
+                       std::vector<Point>(direction.begin(), direction.end()));
+}
+
+std::optional<Point> meeting_point(const std::vector<Point>& at,
+                                   const std::vector<Point>& direction) {
+  if (at.size() < 2 || at.size() != direction.size())
+    return std::nullopt;
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  for (int i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < at.size(); ++i) {
     Eigen::Vector3d d(direction[i][0], direction[i][1], direction[i][2]);
     if (d.norm() == 0.0)
       return std::nullopt;
@@ -105,19 +113,26 @@ FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& fea
     result.lines.push_back(
         {f1.loop_index, f2.loop_index, sample(p0, f1.position, f2.position, p3)});
   }
-  if (features.corner) {
-    std::array<Point, 3> at, direction;
-    for (int m = 0; m < 3; ++m) {
-      at[m] = features.points[(*features.corner)[m]].position;
-      direction[m] = features.points[(*features.corner)[m]].tangent;
+  // Each corner (the triple first): its lines from its feature points to where their
+  // tangent lines meet.
+  for (const auto& corner_points : corners(features)) {
+    std::vector<Point> at, direction;
+    for (int i : corner_points) {
+      at.push_back(features.points[i].position);
+      direction.push_back(features.points[i].tangent);
     }
     auto corner = meeting_point(at, direction);
-    // A meeting point outside the hole's reach is no estimate: the mean of the three points.
-    if (!corner || (*corner - hole.centroid).norm() > 1.5 * hole.radius)
-      corner = (at[0] + at[1] + at[2]) / 3.0;
-    result.corner = corner;
-    for (int m = 0; m < 3; ++m) {
-      const auto& f = features.points[(*features.corner)[m]];
+    // A meeting point outside the hole's reach is no estimate: the mean of the points.
+    if (!corner || (*corner - hole.centroid).norm() > 1.5 * hole.radius) {
+      Point mean(0, 0, 0);
+      for (const Point& p : at)
+        mean += p;
+      corner = mean / static_cast<double>(at.size());
+    }
+    const int index = static_cast<int>(result.corners.size());
+    result.corners.push_back(*corner);
+    for (int i : corner_points) {
+      const auto& f = features.points[i];
       const double d = (*corner - f.position).norm();
       if (d == 0.0)
         continue;
@@ -125,8 +140,22 @@ FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& fea
                            ? outer_control_point(hole, f, crest, d)
                            : f.position - f.tangent * d;
       const Point p3 = *corner * 2.0 - f.position;
-      result.lines.push_back({f.loop_index, -1, sample(p0, f.position, *corner, p3)});
+      FeatureLine line{f.loop_index, -1, sample(p0, f.position, *corner, p3)};
+      line.to_corner = index;
+      result.lines.push_back(std::move(line));
     }
+  }
+  if (features.corner)
+    result.corner = result.corners.front();
+  // Corner links (the user's corner graph): straight lines between two corners.
+  for (const auto& link : features.corner_links) {
+    const Point a = result.corners[link[0]], b = result.corners[link[1]];
+    if ((b - a).norm() == 0.0)
+      continue;
+    FeatureLine line{-1, -1, sample(a * 2.0 - b, a, b, b * 2.0 - a)};
+    line.from_corner = link[0];
+    line.to_corner = link[1];
+    result.lines.push_back(std::move(line));
   }
   return result;
 }

@@ -16,20 +16,27 @@ namespace holebench::crest_feature {
 /// Catmull-Rom spline through P0, P1, P2, P3.
 Point catmull_rom(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double t);
 
-/// The least-squares meeting point of three lines (point, direction); nullopt where the
-/// lines are (nearly) parallel.
+/// The least-squares meeting point of two or more lines (point, direction); nullopt where
+/// the lines are (nearly) parallel.
+std::optional<Point> meeting_point(const std::vector<Point>& at,
+                                   const std::vector<Point>& direction);
+/// The same for three lines.
 std::optional<Point> meeting_point(const std::array<Point, 3>& at,
                                    const std::array<Point, 3>& direction);
 
 struct FeatureLine {
-  int from = 0;                 ///< loop index of the feature point it starts at
-  int to = -1;                  ///< loop index of the feature point it ends at; -1: the corner
+  int from = 0;  ///< loop index of the feature point it starts at; -1: a corner (from_corner)
+  int to = -1;   ///< loop index of the feature point it ends at; -1: a corner (to_corner)
   std::vector<Point> interior;  ///< interpolated feature points, from -> to, ends excluded
+  int to_corner = -1;           ///< index into FeatureLines::corners where `to` is -1
+  int from_corner = -1;         ///< index into FeatureLines::corners where `from` is -1
 };
 
 struct FeatureLines {
-  std::vector<FeatureLine> lines;  ///< pairs first, then the corner's three lines
-  std::optional<Point> corner;     ///< where a corner hole's lines meet
+  /// Pairs first, then each corner's lines (the triple's first), then the corner links.
+  std::vector<FeatureLine> lines;
+  std::optional<Point> corner;  ///< where a corner triple's lines meet (corners[0])
+  std::vector<Point> corners;   ///< every corner: the triple's, then the user's further ones
 };
 
 /// Where P0 and P3 of equation 3 come from: the crest line continued to distance d outside
@@ -51,7 +58,8 @@ struct InterpolationOptions {
 /// fitted tangent line where a crest line has too few points, or without `crest`).
 /// Equations 4-5: t advances by a / d, i.e. the line gets round(d / a) segments. A corner triple's
 /// lines run from each F_i to the meeting point C of the three tangent lines, with P3 = 2C - F_i
-/// (straight into the corner).
+/// (straight into the corner). The user's further corners (not in the paper) are placed the same
+/// way from their two or more lines, and a corner link is the straight line between two corners.
 FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& features,
                                        const InterpolationOptions& options = {},
                                        const CrestLines* crest = nullptr);

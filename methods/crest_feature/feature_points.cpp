@@ -329,6 +329,8 @@ HoleFeatures review_feature_points(const Mesh& mesh, const Hole& hole, int hole_
     proposal.feature_points.push_back(p.position);
   proposal.pairs = proposed.pairs;
   proposal.corner = proposed.corner;
+  proposal.more_corners = proposed.more_corners;
+  proposal.corner_links = proposed.corner_links;
 
   const FeaturePointProposal answer = user.review_feature_points(proposal);
 
@@ -339,7 +341,7 @@ HoleFeatures review_feature_points(const Mesh& mesh, const Hole& hole, int hole_
     // the crest line of the nearest detected point, or from the nearest crest line.
     const FeaturePoint* same = nullptr;
     const FeaturePoint* nearest = nullptr;
-    double nearest_distance = options.merge_edges * hole.average_edge_length;
+    double nearest_distance = options.adopt_crest_line_edges * hole.average_edge_length;
     for (const auto& q : proposed.points) {
       if (q.loop_index == index)
         same = &q;
@@ -363,13 +365,45 @@ HoleFeatures review_feature_points(const Mesh& mesh, const Hole& hole, int hole_
   const int n = static_cast<int>(result.points.size());
   auto valid = [&](int i) { return i >= 0 && i < n; };
   std::set<int> used;
+  // A corner's points: valid, distinct and in no earlier corner; those of a further corner
+  // also on distinct vertices.
+  auto valid_corner = [&](const std::vector<int>& c, bool distinct_vertices) {
+    std::set<int> distinct, at;
+    for (int i : c) {
+      if (!valid(i) || used.count(i))
+        return false;
+      distinct.insert(i);
+      at.insert(result.points[i].loop_index);
+    }
+    return distinct.size() == c.size() && (!distinct_vertices || at.size() == c.size());
+  };
+  // The answer's corners in order (triple first), each mapped to its index in the result's.
+  std::vector<int> corner_index;
+  int kept = 0;
   if (answer.corner) {
-    const auto& c = *answer.corner;
-    const std::set<int> distinct(c.begin(), c.end());
-    if (distinct.size() == 3 && valid(c[0]) && valid(c[1]) && valid(c[2])) {
-      result.corner = c;
+    const std::vector<int> c(answer.corner->begin(), answer.corner->end());
+    const bool ok = valid_corner(c, false);
+    if (ok) {
+      result.corner = answer.corner;
       used.insert(c.begin(), c.end());
     }
+    corner_index.push_back(ok ? kept++ : -1);
+  }
+  for (const auto& c : answer.more_corners) {
+    const bool ok = c.size() >= 2 && valid_corner(c, true);
+    if (ok) {
+      result.more_corners.push_back(c);
+      used.insert(c.begin(), c.end());
+    }
+    corner_index.push_back(ok ? kept++ : -1);
+  }
+  for (const auto& l : answer.corner_links) {
+    const int n_corners = static_cast<int>(corner_index.size());
+    if (l[0] < 0 || l[1] < 0 || l[0] >= n_corners || l[1] >= n_corners || l[0] == l[1])
+      continue;
+    const int a = corner_index[l[0]], b = corner_index[l[1]];
+    if (a >= 0 && b >= 0)
+      result.corner_links.push_back({a, b});
   }
   for (const auto& p : answer.pairs) {
     if (valid(p[0]) && valid(p[1]) && p[0] != p[1] && !used.count(p[0]) && !used.count(p[1]) &&
@@ -379,6 +413,14 @@ HoleFeatures review_feature_points(const Mesh& mesh, const Hole& hole, int hole_
       used.insert(p[1]);
     }
   }
+  return result;
+}
+
+std::vector<std::vector<int>> corners(const HoleFeatures& features) {
+  std::vector<std::vector<int>> result;
+  if (features.corner)
+    result.emplace_back(features.corner->begin(), features.corner->end());
+  result.insert(result.end(), features.more_corners.begin(), features.more_corners.end());
   return result;
 }
 

@@ -22,8 +22,14 @@ struct FeaturePointOptions {
   double ray_tolerance_edges = 1.5;
   /// Crest points within this many a of a feature point give its tangent.
   double tangent_radius_edges = 6.0;
-  /// Detected feature points closer than this many a are one (the stronger line wins).
-  double merge_edges = 2.5;
+  /// Detected feature points closer than this many a are one (the stronger line wins): two
+  /// crest-line ends that reach the boundary at the same place. The paper merges nothing; 2.5a
+  /// (the value before issue 16) made one point of the two ends of a crease on small holes
+  /// (a 9-vertex hole across a cylinder's rim: 2.3a apart), so the crease got no pair.
+  double merge_edges = 0.5;
+  /// 3.4.2: a point the user moves or adds takes the crest line of the detected point within
+  /// this many a of it (for its tangent), else the nearest crest line.
+  double adopt_crest_line_edges = 2.5;
   /// Automatic rule: two feature points are paired if the chord between them is within this
   /// angle of both tangents (degrees), best pairs first.
   double pair_max_angle_degrees = 35.0;
@@ -57,7 +63,15 @@ struct HoleFeatures {
   std::vector<FeaturePoint> points;
   std::vector<std::array<int, 2>> pairs;     ///< one feature line per pair
   std::optional<std::array<int, 3>> corner;  ///< three feature lines meeting at a corner
+  /// Not in the paper: the user's corner graph (FeaturePointProposal::more_corners and
+  /// corner_links). The automatic rule proposes none.
+  std::vector<std::vector<int>> more_corners;
+  std::vector<std::array<int, 2>> corner_links;  ///< indices into corners(): triple first
 };
+
+/// The hole's corners as lists of feature points: the triple first where there is one, then
+/// `more_corners`.
+std::vector<std::vector<int>> corners(const HoleFeatures& features);
 
 /// 3.4.1: the feature points of `hole` (crest lines ending at its boundary), then the
 /// automatic rule of 3.4.2 (what the method proposes before a user answers): corner triple

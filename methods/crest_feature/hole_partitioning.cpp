@@ -1,6 +1,7 @@
 #include "methods/crest_feature/hole_partitioning.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace holebench::crest_feature {
 namespace {
@@ -56,12 +57,19 @@ HolePartition partition_hole(const Hole& hole, const FeatureLines& lines) {
   };
   auto vertex_node = [&](int loop_index) { return Node(hole.vertices[loop_index].idx()); };
 
-  // The chords: one per pair; for a corner, lines 1 and 2 through the corner, then line 3.
+  // The chords: one per pair; for each corner (the triple first), its first two lines make
+  // one chord through the corner, each further line a chord from its feature point to the
+  // corner; a corner link is a chord between two corners.
   std::vector<std::vector<Node>> chords;
-  std::vector<const FeatureLine*> corner_lines;
+  std::vector<std::vector<const FeatureLine*>> corner_lines(lines.corners.size());
+  std::vector<const FeatureLine*> links;
   for (const auto& line : lines.lines) {
+    if (line.from < 0) {
+      links.push_back(&line);
+      continue;
+    }
     if (line.to < 0) {
-      corner_lines.push_back(&line);
+      corner_lines[line.to_corner].push_back(&line);
       continue;
     }
     std::vector<Node> chord{vertex_node(line.from)};
@@ -70,21 +78,41 @@ HolePartition partition_hole(const Hole& hole, const FeatureLines& lines) {
     chord.push_back(vertex_node(line.to));
     chords.push_back(std::move(chord));
   }
-  if (lines.corner && corner_lines.size() == 3) {
-    const Node corner = add_points({*lines.corner}).front();
-    std::vector<Node> through{vertex_node(corner_lines[0]->from)};
-    for (Node n : add_points(corner_lines[0]->interior))
+  std::vector<std::optional<Node>> corner_node(lines.corners.size());
+  for (std::size_t c = 0; c < lines.corners.size(); ++c) {
+    const auto& at = corner_lines[c];
+    if (at.size() < 2) {
+      result.dropped.push_back("a corner with fewer than two feature lines");
+      continue;
+    }
+    const Node corner = add_points({lines.corners[c]}).front();
+    corner_node[c] = corner;
+    std::vector<Node> through{vertex_node(at[0]->from)};
+    for (Node n : add_points(at[0]->interior))
       through.push_back(n);
     through.push_back(corner);
-    std::vector<Node> second = add_points(corner_lines[1]->interior);
+    std::vector<Node> second = add_points(at[1]->interior);
     through.insert(through.end(), second.rbegin(), second.rend());
-    through.push_back(vertex_node(corner_lines[1]->from));
+    through.push_back(vertex_node(at[1]->from));
     chords.push_back(std::move(through));
-    std::vector<Node> third{vertex_node(corner_lines[2]->from)};
-    for (Node n : add_points(corner_lines[2]->interior))
-      third.push_back(n);
-    third.push_back(corner);
-    chords.push_back(std::move(third));
+    for (std::size_t m = 2; m < at.size(); ++m) {
+      std::vector<Node> further{vertex_node(at[m]->from)};
+      for (Node n : add_points(at[m]->interior))
+        further.push_back(n);
+      further.push_back(corner);
+      chords.push_back(std::move(further));
+    }
+  }
+  for (const FeatureLine* link : links) {
+    if (!corner_node[link->from_corner] || !corner_node[link->to_corner]) {
+      result.dropped.push_back("a corner link to a corner that was left out");
+      continue;
+    }
+    std::vector<Node> chord{*corner_node[link->from_corner]};
+    for (Node n : add_points(link->interior))
+      chord.push_back(n);
+    chord.push_back(*corner_node[link->to_corner]);
+    chords.push_back(std::move(chord));
   }
 
   for (const auto& chord : chords) {

@@ -33,10 +33,11 @@ struct HolePartition {
 };
 
 /// Splits the hole's loop by each feature line in turn (a pair's line is a chord between
-/// two boundary vertices; a corner's first two lines make one chord through the corner,
-/// the third a chord from its feature point to the corner). A line whose ends are not on one
-/// current sub-hole (it would cross an earlier line) or that would leave a sub-hole with
-/// fewer than three nodes is dropped.
+/// two boundary vertices; a corner's first two lines make one chord through the corner, each
+/// further line a chord from its feature point to the corner; a corner link, of the user's
+/// corner graph, a chord between two corners). A line whose ends are not on one current
+/// sub-hole (it would cross an earlier line) or that would leave a sub-hole with fewer than
+/// three nodes is dropped.
 HolePartition partition_hole(const Hole& hole, const FeatureLines& lines);
 
 }  // namespace holebench::crest_feature

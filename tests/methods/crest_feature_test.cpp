@@ -192,10 +192,16 @@ TEST(CatmullRom, Equation3InterpolatesAndIsStraightOnALine) {
 
 // Three lines through (1,0,0), (0,1,0), (0,0,1) along the axes towards the origin meet there.
 TEST(CatmullRom, ThreeTangentLinesMeetAtTheCorner) {
-  const auto c = meeting_point({Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)},
-                               {Point(-1, 0, 0), Point(0, -1, 0), Point(0, 0, -1)});
+  const auto c =
+      meeting_point(std::array<Point, 3>{Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)},
+                    std::array<Point, 3>{Point(-1, 0, 0), Point(0, -1, 0), Point(0, 0, -1)});
   ASSERT_TRUE(c);
   EXPECT_NEAR(c->norm(), 0.0, 1e-12);
+  // Two of them (a corner of the user's corner graph reached by two lines) meet there too.
+  const auto two = meeting_point(std::vector<Point>{Point(1, 0, 0), Point(0, 1, 0)},
+                                 std::vector<Point>{Point(-1, 0, 0), Point(0, -1, 0)});
+  ASSERT_TRUE(two);
+  EXPECT_NEAR(two->norm(), 0.0, 1e-12);
 }
 
 struct MethodRun {
@@ -248,6 +254,41 @@ TEST(CrestFeature, OneCreaseHoleGetsOneFeatureLineAndTheCreaseIsRestored) {
     const MethodRun r = run_method("crease/fandisk/1", oracle);
     EXPECT_EQ(r.result.status, MethodStatus::Ok);
     EXPECT_EQ(metric(r.evaluation, "missing_edge_present_fraction"), 1.0) << oracle;
+  }
+}
+
+// Two crest lines that reach a small hole's boundary at different points are two feature
+// points (3.4.1: a feature point wherever a crest line meets the boundary). On the
+// cylinder's rim the 9-vertex hole's two crease ends are 2.3 mean edge lengths apart; when
+// points within 2.5a were merged they became one point, the crease got no pair and no
+// feature line. Now both are found, paired, and the crease is restored without a user.
+TEST(CrestFeature, CreaseEndsOnASmallHoleAreTwoFeaturePoints) {
+  const Case c = generators::make_case("solid/cylinder/edge_convex/small");
+  const CrestLines crest = detect_crest_lines(c.input);
+  const auto holes = identify_holes(c.input);
+  ASSERT_EQ(holes.size(), 1u);
+  const HoleFeatures features = detect_feature_points(c.input, holes[0], crest);
+  EXPECT_EQ(features.points.size(), 2u);
+  EXPECT_EQ(features.pairs.size(), 1u);
+  FeaturePointOptions merged;
+  merged.merge_edges = 2.5;
+  EXPECT_EQ(detect_feature_points(c.input, holes[0], crest, merged).points.size(), 1u);
+  const MethodRun r = run_method("solid/cylinder/edge_convex/small", false);
+  EXPECT_EQ(metric(r.evaluation, "missing_edge_present_fraction"), 1.0);
+}
+
+// The paper's three fandisk crease holes (figures 10 and 13) are filled on the paper's path
+// in both user modes: every sub-hole by equation 6, no hole through a fallback.
+TEST(CrestFeature, NoFallbackOnTheThreeCreaseHoles) {
+  for (int n = 1; n <= 3; ++n) {
+    for (bool oracle : {false, true}) {
+      const std::string id = "crease/fandisk/" + std::to_string(n);
+      const MethodRun r = run_method(id, oracle);
+      ASSERT_EQ(r.result.holes.size(), 1u) << id;
+      EXPECT_TRUE(r.result.holes[0].closed) << id << " " << oracle;
+      EXPECT_EQ(r.result.holes[0].fallback, "")
+          << id << " " << oracle << ": " << r.result.holes[0].note;
+    }
   }
 }
 
