@@ -2,6 +2,7 @@
 
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
+#include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/heat_map.h"
 #include "metrics/embree/triangle_scene.h"
 
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -39,6 +41,7 @@ struct ViewerPly {
   std::vector<std::uint8_t> patch;
   std::vector<std::array<std::int32_t, 2>> open_edges;  ///< the mesh's boundary edges
   double heat_scale_max_rel_diag = 0.0;                 ///< 0: not written
+  std::optional<Point> view_direction;                  ///< written where set
 };
 
 template <typename T>
@@ -53,6 +56,8 @@ std::string encode(const ViewerPly& ply) {
   std::string out = "ply\nformat binary_little_endian 1.0\ncomment holebench viewer mesh\n";
   if (ply.heat_scale_max_rel_diag > 0.0)
     out += fmt::format("comment heat_scale_max_rel_diag {:.17g}\n", ply.heat_scale_max_rel_diag);
+  if (const auto& d = ply.view_direction)
+    out += fmt::format("comment view_direction {:.9g} {:.9g} {:.9g}\n", (*d)[0], (*d)[1], (*d)[2]);
   out += fmt::format(
       "element vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
       "property float quality\nelement face {}\nproperty list uchar int vertex_indices\n"
@@ -162,8 +167,11 @@ std::string repaired_mesh_file(const harness::Job& job) {
   return "meshes/" + file_stem(job.id()) + ".repaired.ply";
 }
 
-void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path) {
-  write_whole(encode(kept_faces(mesh, true)), path);
+void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path,
+                      const std::optional<Point>& view_direction) {
+  ViewerPly ply = kept_faces(mesh, true);
+  ply.view_direction = view_direction;
+  write_whole(encode(ply), path);
 }
 
 void write_repaired_mesh(const Case& c, const Mesh& repaired, const std::filesystem::path& path,
@@ -196,11 +204,14 @@ void write_repaired_mesh(const Case& c, const Mesh& repaired, const std::filesys
 void write_job_meshes(const Case& c, const Mesh& repaired, const harness::Job& job,
                       const std::filesystem::path& out_dir, const ViewerMeshOptions& options) {
   const auto complete = out_dir / complete_mesh_file(job);
-  if (!std::filesystem::exists(complete))
-    write_plain_mesh(c.complete, complete);
   const auto holed = out_dir / holed_mesh_file(job);
-  if (!std::filesystem::exists(holed))
-    write_plain_mesh(c.input, holed);
+  if (!std::filesystem::exists(complete) || !std::filesystem::exists(holed)) {
+    std::optional<Point> direction;
+    if (!c.holes.empty())
+      direction = render::hole_view(c, 0).camera.direction;
+    write_plain_mesh(c.complete, complete, direction);
+    write_plain_mesh(c.input, holed, direction);
+  }
   write_repaired_mesh(c, repaired, out_dir / repaired_mesh_file(job), options);
 }
 

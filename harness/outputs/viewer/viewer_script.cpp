@@ -41,10 +41,14 @@ const char* viewer_script() {
     if (headerEnd < 0 || text.indexOf('binary_little_endian') < 0) throw new Error('not a viewer PLY');
     var counts = {vertex: 0, face: 0, edge: 0};
     var scale = 0;
+    var direction = null;
     text.split('\n').forEach(function (line) {
       var w = line.trim().split(/\s+/);
       if (w[0] === 'element') counts[w[1]] = parseInt(w[2], 10);
       if (w[0] === 'comment' && w[1] === 'heat_scale_max_rel_diag') scale = parseFloat(w[2]);
+      if (w[0] === 'comment' && w[1] === 'view_direction') {
+        direction = [parseFloat(w[2]), parseFloat(w[3]), parseFloat(w[4])];
+      }
     });
     var view = new DataView(buffer, headerEnd);
     var at = 0;
@@ -72,7 +76,7 @@ const char* viewer_script() {
       edges[2 * e + 1] = view.getInt32(at + 4, true);
     }
     return {positions: positions, quality: quality, faces: faces, patch: patch, edges: edges,
-            scale: scale};
+            scale: scale, direction: direction};
   }
 
   function gamma(c) { return [Math.pow(c[0], 1 / 2.2), Math.pow(c[1], 1 / 2.2), Math.pow(c[2], 1 / 2.2)]; }
@@ -198,22 +202,33 @@ const char* viewer_script() {
     meshes.forEach(function (name) { scaleMax = Math.max(scaleMax, parsed[index][name].scale); });
     if (scaleMax <= 0) scaleMax = 0.01;
     drawBar(scaleMax);
+    // The camera looks along the first hole's close-up direction (from the ground truth);
+    // the meshes stand side by side across the view, in rows.
+    var d = parsed[index][meshes[0]].direction || [-0.55, 0.75, -0.45];
+    var direction = new THREE.Vector3(d[0], d[1], d[2]).normalize();
+    // z stays up (the orbit's axis): a view straight down or up is tilted a little.
+    if (Math.abs(direction.z) > 0.95) direction.add(new THREE.Vector3(0.35, -0.3, 0)).normalize();
+    var up = new THREE.Vector3(0, 0, 1);
+    var right = new THREE.Vector3().crossVectors(direction, up).normalize();
+    var screenUp = new THREE.Vector3().crossVectors(right, direction).normalize();
     var box = new THREE.Box3();
-    var first = parsed[index][meshes[0]].positions;
-    box.setFromArray(first);
-    var size = box.getSize(new THREE.Vector3());
+    box.setFromArray(parsed[index][meshes[0]].positions);
+    var one = box.getBoundingSphere(new THREE.Sphere());
     var columns = Math.max(1, Math.ceil(Math.sqrt(ticked.length)));
+    var rows = Math.max(1, Math.ceil(ticked.length / columns));
+    var step = 2.2 * one.radius;
     ticked.forEach(function (name, i) {
       var object = buildObject(parsed[index][name], scaleMax);
-      object.position.set((i % columns) * size.x * 1.25, 0, -Math.floor(i / columns) * size.z * 1.25);
+      var column = i % columns - (columns - 1) / 2;
+      var row = Math.floor(i / columns) - (rows - 1) / 2;
+      object.position.copy(right.clone().multiplyScalar(column * step)
+                               .addScaledVector(screenUp, -row * step));
       t.group.add(object);
     });
-    var all = new THREE.Box3().setFromObject(t.group);
-    if (all.isEmpty()) all = box;
-    var sphere = all.getBoundingSphere(new THREE.Sphere());
+    var sphere = new THREE.Sphere(one.center.clone(),
+                                  one.radius * Math.max(columns, rows) * 1.15);
     var distance = 1.1 * sphere.radius / Math.sin(20 * Math.PI / 180);
-    var direction = new THREE.Vector3(0.55, -0.75, 0.45).normalize();
-    t.camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    t.camera.position.copy(sphere.center).addScaledVector(direction, -distance);
     t.camera.near = distance / 100;
     t.camera.far = distance * 10;
     t.camera.updateProjectionMatrix();
