@@ -239,6 +239,9 @@ int main(int argc, char** argv) {
                   "ground truth); repeatable");
   bool no_snapshots = false;
   run->add_flag("--no-snapshots", no_snapshots, "Do not render a PNG per job");
+  bool no_viewer_meshes = false;
+  run->add_flag("--no-viewer-meshes", no_viewer_meshes,
+                "Do not write the report's 3D viewer meshes (meshes/) with the snapshots");
   int workers = 0;
   run->add_option("--workers,-j", workers, "Jobs at once (default: the number of cores)")
       ->check(CLI::NonNegativeNumber);
@@ -489,6 +492,7 @@ int main(int argc, char** argv) {
       if (no_cad)
         options.catalog.include_cad = false;
       options.snapshots = !no_snapshots;
+      options.viewer_meshes = !no_viewer_meshes;
       options.runner.workers = workers;
       if (timeout >= 0.0)
         options.runner.timeout_seconds = timeout;

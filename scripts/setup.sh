@@ -24,6 +24,9 @@ packages=(
   meshlab xvfb xauth
   # reports: plots; the worked example of an external method (examples/fan_fill.py)
   python3 python3-matplotlib
+  # the report's 3D viewer: three.js r111, copied into each report (harness/outputs/viewer/),
+  # and the headless browser its test draws it in (tests/harness/outputs/viewer/)
+  libjs-three chromium
   # formatting of the sources
   clang-format
   # the cluster workflow's test on a throwaway single-node Slurm (tests/slurm/)

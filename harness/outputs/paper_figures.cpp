@@ -18,18 +18,6 @@
 namespace holebench::harness {
 namespace {
 
-// Copies `tile` into `sheet` at (x0, y0).
-void paste(render::Image& sheet, const render::Image& tile, int x0, int y0) {
-  for (int y = 0; y < tile.height; ++y) {
-    for (int x = 0; x < tile.width; ++x) {
-      for (int c = 0; c < 3; ++c) {
-        sheet.pixels[(static_cast<std::size_t>(y0 + y) * sheet.width + x0 + x) * 3 + c] =
-            tile.pixels[(static_cast<std::size_t>(y) * tile.width + x) * 3 + c];
-      }
-    }
-  }
-}
-
 std::filesystem::path figure_5(const FiguresOptions& options) {
   const std::vector<std::string> patterns = {"convex-convex-convex", "convex-convex-reflex",
                                              "convex-reflex-reflex", "reflex-reflex-reflex"};
@@ -48,8 +36,8 @@ std::filesystem::path figure_5(const FiguresOptions& options) {
       MethodParameters parameters;
       parameters.structure_size = c.parameters.structure_size;
       const MethodResult result = method->run(c.input, parameters, user);
-      paste(sheet, render::job_snapshot(c, result, snapshot),
-            static_cast<int>(column) * options.tile_width, row * options.tile_height);
+      render::paste(sheet, render::job_snapshot(c, result, snapshot),
+                    static_cast<int>(column) * options.tile_width, row * options.tile_height);
     }
   }
   const auto path = options.out_dir / "figure5_brep_k3_inner.png";

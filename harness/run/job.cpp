@@ -4,8 +4,9 @@
 #include "core/geometry.h"
 #include "core/stopwatch.h"
 #include "generators/case_catalog.h"
-#include "harness/outputs/render/case_view.h"
-#include "harness/outputs/render/snapshot.h"
+#include "harness/outputs/render/close_up.h"
+#include "harness/outputs/render/image.h"
+#include "harness/outputs/viewer/viewer_mesh.h"
 #include "harness/run/oracle_user.h"
 #include "methods/common/cgal_random.h"
 #include "methods/external/external_method.h"
@@ -137,7 +138,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
       }
       const auto path = options.snapshot_dir / (name + ".png");
       const auto snapshot_start = Clock::now();
-      render::write_png(render::job_snapshot(c, result), path);
+      render::write_png(render::job_picture(c, result), path);
+      if (!options.viewer_mesh_dir.empty())
+        viewer::write_job_meshes(c, result.repaired, job, options.viewer_mesh_dir);
       record.stages.push_back({"snapshot", seconds_since(snapshot_start)});
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
     }

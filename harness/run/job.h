@@ -83,6 +83,9 @@ struct JobOptions {
   const generators::CaseCatalog* catalog = nullptr;  ///< nullptr: the default catalog
   EvaluationOptions evaluation;
   std::filesystem::path snapshot_dir;  ///< empty: no snapshot
+  /// The output folder that gets the report's 3D viewer meshes (meshes/, written with the
+  /// snapshot and timed in its stage; outputs/viewer/viewer_mesh.h); empty: none.
+  std::filesystem::path viewer_mesh_dir;
   /// Runs of the method per job, for steadier timings: the record's method time is their
   /// median; the first run's result is the one evaluated (the methods are deterministic).
   int method_repetitions = 1;

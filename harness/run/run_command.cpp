@@ -126,6 +126,8 @@ RunSummary run_jobs(const RunOptions& options) {
   job_options.method_repetitions = options.method_repetitions;
   if (options.snapshots) {
     job_options.snapshot_dir = options.out_dir / "snapshots";
+    if (options.viewer_meshes)
+      job_options.viewer_mesh_dir = options.out_dir;
     std::filesystem::create_directories(job_options.snapshot_dir);
   }
   RunSummary summary;

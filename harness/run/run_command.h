@@ -26,6 +26,8 @@ struct RunOptions {
   std::vector<std::uint64_t> seeds{0};
   generators::CatalogOptions catalog;
   bool snapshots = true;
+  /// With the snapshots, the report's 3D viewer meshes (meshes/, outputs/viewer/viewer_mesh.h).
+  bool viewer_meshes = true;
   EvaluationOptions evaluation;
   std::string suite_name = "ad hoc";  ///< written into the results' context
   RunnerOptions runner;               ///< workers, timeout, resume, progress

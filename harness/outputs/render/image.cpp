@@ -26,6 +26,45 @@ void Image::set(int x, int y, const Rgb& colour) {
   pixels[i + 2] = to_byte(colour.b);
 }
 
+void paste(Image& sheet, const Image& tile, int x0, int y0) {
+  for (int y = 0; y < tile.height; ++y) {
+    for (int x = 0; x < tile.width; ++x) {
+      if (x0 + x < 0 || y0 + y < 0 || x0 + x >= sheet.width || y0 + y >= sheet.height)
+        continue;
+      for (int c = 0; c < 3; ++c) {
+        sheet.pixels[(static_cast<std::size_t>(y0 + y) * sheet.width + x0 + x) * 3 + c] =
+            tile.pixels[(static_cast<std::size_t>(y) * tile.width + x) * 3 + c];
+      }
+    }
+  }
+}
+
+void fill(Image& image, const Rgb& colour) {
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x)
+      image.set(x, y, colour);
+  }
+}
+
+Image read_image(const std::filesystem::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+    throw std::runtime_error("cannot read " + path.string() + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  const int channels = spec.nchannels;
+  std::vector<std::uint8_t> all(static_cast<std::size_t>(spec.width) * spec.height * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, all.data())) {
+    throw std::runtime_error("cannot read " + path.string() + ": " + in->geterror());
+  }
+  in->close();
+  Image image(spec.width, spec.height);
+  for (std::size_t p = 0; p < static_cast<std::size_t>(spec.width) * spec.height; ++p) {
+    for (int c = 0; c < 3; ++c)
+      image.pixels[p * 3 + c] = all[p * channels + (channels >= 3 ? c : 0)];
+  }
+  return image;
+}
+
 void write_png(const Image& image, const std::filesystem::path& path) {
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out)

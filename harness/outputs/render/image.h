@@ -20,6 +20,17 @@ struct Image {
   void set(int x, int y, const Rgb& colour);
 };
 
+/// Copies `tile` into `sheet` with its top-left corner at (x0, y0); what falls outside the
+/// sheet is cut off.
+void paste(Image& sheet, const Image& tile, int x0, int y0);
+
+/// Fills the whole image with one colour.
+void fill(Image& image, const Rgb& colour);
+
+/// Reads an image file (PNG and the other formats OpenImageIO knows) as 8-bit RGB (grey is
+/// repeated, alpha dropped). Throws std::runtime_error with OpenImageIO's message on failure.
+Image read_image(const std::filesystem::path& path);
+
 /// Writes `image` as PNG. Throws std::runtime_error with OpenImageIO's message on failure.
 void write_png(const Image& image, const std::filesystem::path& path);
 

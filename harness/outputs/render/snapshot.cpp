@@ -171,8 +171,25 @@ TriangleSoup arrow_solid(const Point& from, const Point& to, double radius, int 
   return soup;
 }
 
+std::optional<Projection> project(const Camera& camera, int width, int height, const Point& p) {
+  const View view(camera, width, height);
+  Projection out;
+  if (!view.project(p, out.x, out.y, out.depth))
+    return std::nullopt;
+  return out;
+}
+
+Point eye_of(const Camera& camera) {
+  return camera.target - camera.direction / camera.direction.norm() * camera.distance;
+}
+
 Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options,
                       const Overlay& overlay) {
+  return render_with_depth(mesh, camera, options, overlay).image;
+}
+
+Rendering render_with_depth(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options,
+                            const Overlay& overlay) {
   const embree::TriangleScene scene(mesh);
   // The overlay's solids in one scene of their own, with each triangle's colour.
   TriangleSoup solids;
@@ -224,6 +241,11 @@ Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOpti
             const double facing = -OpenMesh::dot(hit.normal, direction / direction.norm());
             const float light = static_cast<float>(0.25 + 0.75 * std::abs(facing));
             Rgb base = is_new(mesh, f) ? patch_colour() : region_colour(region(mesh, f));
+            if (options.colouring) {
+              if (const auto own =
+                      options.colouring(f, view.eye + direction / direction.norm() * hit.distance))
+                base = *own;
+            }
             if (facing < 0.0)
               base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
             colour = {base.r * light, base.g * light, base.b * light};
@@ -238,7 +260,7 @@ Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOpti
     }
   }
   draw_overlay(image, view, depth, 0.01 * camera.distance, overlay);
-  return image;
+  return {std::move(image), std::move(depth)};
 }
 
 }  // namespace holebench::render

@@ -7,6 +7,8 @@
 #include "core/mesh_builder.h"
 #include "harness/outputs/render/image.h"
 
+#include <functional>
+#include <optional>
 #include <vector>
 
 namespace holebench::render {
@@ -18,10 +20,15 @@ struct Camera {
   double field_of_view_degrees = 40.0;
 };
 
+/// The base colour of a mesh face at a hit point, in place of its region or patch colour;
+/// std::nullopt keeps that colour.
+using FaceColouring = std::function<std::optional<Rgb>(FaceHandle face, const Point& hit)>;
+
 struct SnapshotOptions {
   int width = 480;
   int height = 360;
   int samples_per_axis = 2;  ///< supersampling: samples_per_axis^2 rays per pixel
+  FaceColouring colouring;   ///< empty: region colours, the patch orange
 };
 
 /// A camera looking along `direction` at `target` from just far enough that a sphere of
@@ -60,6 +67,32 @@ TriangleSoup arrow_solid(const Point& from, const Point& to, double radius, int 
 
 Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options = {},
                       const Overlay& overlay = {});
+
+/// A picture with its depth buffer: per pixel the smallest distance from the eye to what a
+/// sample of the pixel hit (the mesh or an overlay solid), infinity where all missed.
+struct Rendering {
+  Image image;
+  std::vector<double> depth;  ///< row-major, top row first
+
+  double depth_at(int x, int y) const {
+    return depth[static_cast<std::size_t>(y) * image.width + x];
+  }
+};
+
+/// render_snapshot, keeping the depth buffer.
+Rendering render_with_depth(const Mesh& mesh, const Camera& camera,
+                            const SnapshotOptions& options = {}, const Overlay& overlay = {});
+
+/// Where a point lands in a picture of `width` x `height` taken by `camera`.
+struct Projection {
+  double x = 0.0, y = 0.0;  ///< pixel coordinates (may lie outside the image)
+  double depth = 0.0;       ///< distance from the eye
+};
+/// The projection of `p`, or std::nullopt when it lies behind the camera.
+std::optional<Projection> project(const Camera& camera, int width, int height, const Point& p);
+
+/// The camera's eye (target - direction * distance).
+Point eye_of(const Camera& camera);
 
 /// The colour of region `id` (a fixed palette, the same in every picture).
 Rgb region_colour(int id);

@@ -310,8 +310,9 @@ std::string snapshot_grid(const ResultsData& data) {
   }
   std::string out;
   for (const auto& [case_id, variants] : cases) {
-    out += fmt::format("<h3 id=\"case-{}\">{}</h3>\n<table class=\"strip\">\n<tr><th></th>",
-                       url_path(case_id), html_escape(case_id));
+    out += fmt::format(
+        "<h3 id=\"case-{}\">{}</h3>\n<div class=\"strip\"><table class=\"strip\">\n<tr><th></th>",
+        url_path(case_id), html_escape(case_id));
     for (const auto& method : methods)
       out += "<th>" + html_escape(method) + "</th>";
     out += "</tr>\n";
@@ -334,21 +335,21 @@ std::string snapshot_grid(const ResultsData& data) {
           out += fmt::format("<td class=\"none\">no snapshot<br>{}</td>", html_escape(caption));
         } else {
           out += fmt::format(
-              "<td><a href=\"../{0}\"><img src=\"../{0}\" alt=\"{1}\" width=\"200\" "
+              "<td><a href=\"../{0}\"><img src=\"../{0}\" alt=\"{1}\" width=\"340\" "
               "loading=\"lazy\"></a><br>{2}</td>",
               url_path(r.snapshot), html_escape(r.job.id()), html_escape(caption));
         }
       }
       out += "</tr>\n";
     }
-    out += "</table>\n";
+    out += "</table></div>\n";
   }
   return out;
 }
 
 std::string report_html(const ResultsData& data, const Leaderboard& board,
                         const SummaryTable& table, const std::filesystem::path& results_dir,
-                        const std::string& plots_note) {
+                        const std::string& plots_note, const std::string& viewer_html) {
   const auto& c = data.context;
   std::string out =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -365,11 +366,23 @@ std::string report_html(const ResultsData& data, const Leaderboard& board,
       "table.leaderboard tr.first td { border-top: 2px solid #888; }\n"
       "table.leaderboard td:nth-child(-n+3) { text-align: left; }\n"
       "section.family input.kinds:not(:checked) ~ table tbody.kind { display: none; }\n"
+      "div.strip { overflow-x: auto; }\n"
+      "div.viewer-box { position: relative; width: 960px; max-width: 100%; }\n"
+      "#viewer-canvas { width: 880px; height: 560px; display: block; background: #1d2433; }\n"
+      "#viewer-bar { position: absolute; left: 890px; top: 0; height: 560px; width: 70px; }\n"
+      ".viewer-strip { position: absolute; left: 0; top: 8px; bottom: 8px; width: 16px; }\n"
+      ".viewer-label { position: absolute; left: 22px; font-size: 12px; }\n"
+      ".viewer-label-0 { top: 0; } .viewer-label-1 { top: 272px; } "
+      ".viewer-label-2 { bottom: 0; }\n"
       "</style>\n</head>\n<body>\n<h1>holebench report</h1>\n";
   out += fmt::format(
       "<p>Suite <code>{}</code>, code <code>{}</code>, {} build on {}, run {}; {} jobs.</p>\n",
       html_escape(c.suite), html_escape(c.code_version), html_escape(c.build_type),
       html_escape(c.host), html_escape(c.created_utc), data.records.size());
+  out +=
+      "<p>On this page: <a href=\"#leaderboard\">leaderboard</a>, <a href=\"#paired\">paired "
+      "comparisons</a>, <a href=\"#summary\">summary</a>, <a href=\"#plots\">plots</a>, <a "
+      "href=\"#snapshots\">pictures per case</a>, <a href=\"#viewer\">3D viewer</a>.</p>\n";
   out += leaderboard_html(board);
   out +=
       "<h2>Files</h2>\n<p>Also here: <a href=\"leaderboard.md\">leaderboard.md</a>, <a "
@@ -384,7 +397,7 @@ std::string report_html(const ResultsData& data, const Leaderboard& board,
   }
   out += "</p>\n";
 
-  out += "<h2>Summary: method &times; case kind</h2>\n" + html_table(table);
+  out += "<h2 id=\"summary\">Summary: method &times; case kind</h2>\n" + html_table(table);
   out += fmt::format(
       "<p>Medians over every job of the row that has the metric (all noise levels, seeds and "
       "users); IQR = q3 - q1. Highlighted rows: <em>few</em> = fewer than {} values in a "
@@ -392,7 +405,7 @@ std::string report_html(const ResultsData& data, const Leaderboard& board,
       "(the row mixes cases that behave differently; read results.csv).</p>\n",
       table.options.min_samples, 100.0 * table.options.max_relative_spread);
 
-  out += "<h2>Plots</h2>\n";
+  out += "<h2 id=\"plots\">Plots</h2>\n";
   if (plots_note.empty()) {
     for (const auto& [file, caption] : plot_files()) {
       out += fmt::format(
@@ -406,9 +419,18 @@ std::string report_html(const ResultsData& data, const Leaderboard& board,
   }
 
   out +=
-      "<h2>Snapshots</h2>\n<p>Per case, the methods side by side; one row per user, noise "
-      "level and seed. The patch is orange.</p>\n";
+      "<h2 id=\"snapshots\">Pictures per case</h2>\n<p>Per case, the methods side by side; one "
+      "row per user, noise level and seed. Each picture shows a close-up of the hole (of the "
+      "first two holes where there are more), the camera outside the model looking into it, "
+      "beside the whole model seen from the same side. Kept faces are grey; the patch is "
+      "coloured by its distance to the complete model, relative to the bounding-box diagonal, "
+      "from blue (on the model) to red (at the top of the bar or beyond). The bar's scale is the "
+      "case's, from its ground truth only (half the largest hole's radius, rounded up to 1, 2 "
+      "or 5 times a power of ten), so every method of a case is coloured on the same scale. "
+      "Holes left open are outlined in magenta; guidance arrows are blue. Click a picture for "
+      "its full size.</p>\n";
   out += snapshot_grid(data);
+  out += viewer_html;
   out += "</body>\n</html>\n";
   return out;
 }
@@ -459,8 +481,16 @@ ReportSummary write_report(const ResultsData& data, const std::filesystem::path&
     std::fprintf(stderr, "holebench report: no plots: %s\n", summary.plots_note.c_str());
   }
 
+  const viewer::ViewerSection viewer =
+      viewer::write_viewer(data, results_dir, summary.dir, options.viewer);
+  summary.viewer_cases = viewer.cases;
+  summary.viewer_note = viewer.note;
+  summary.files.insert(summary.files.end(), viewer.files.begin(), viewer.files.end());
+  if (!viewer.note.empty() && options.warnings_to_stderr)
+    std::fprintf(stderr, "holebench report: no 3D viewer: %s\n", viewer.note.c_str());
+
   write_file(summary.dir / "report.html",
-             report_html(data, board, table, results_dir, summary.plots_note));
+             report_html(data, board, table, results_dir, summary.plots_note, viewer.html));
   summary.files.push_back("report.html");
   std::sort(summary.files.begin(), summary.files.end());
   return summary;

@@ -5,6 +5,7 @@
 
 #include "harness/outputs/report/leaderboard.h"
 #include "harness/outputs/report/summary_table.h"
+#include "harness/outputs/viewer/viewer_page.h"
 #include "harness/results/results_reader.h"
 
 #include <filesystem>
@@ -21,7 +22,8 @@ struct ReportOptions {
   std::string python = "/usr/bin/python3";
   /// The plot script; empty: default_plot_script().
   std::filesystem::path plot_script;
-  bool warnings_to_stderr = true;  ///< say on stderr why plots were not made
+  bool warnings_to_stderr = true;  ///< say on stderr why plots (or the viewer) were not made
+  viewer::ViewerOptions viewer;    ///< where three.js is, how many cases the viewer shows
 };
 
 struct ReportSummary {
@@ -31,6 +33,8 @@ struct ReportSummary {
   std::string plots_note;        ///< why there are no plots (empty when there are)
   std::size_t rows = 0;          ///< summary rows (method x case kind)
   std::size_t flagged_rows = 0;  ///< of those, flagged few / spread
+  std::size_t viewer_cases = 0;  ///< cases in the 3D viewer
+  std::string viewer_note;       ///< why there is no 3D viewer (empty when there is)
 };
 
 /// $HOLEBENCH_PLOT_SCRIPT if set, else scripts/plot_results.py of the source tree.
@@ -40,8 +44,9 @@ std::filesystem::path default_plot_script();
 std::string console_summary(const ResultsData& data, const ReportOptions& options = {});
 
 /// Writes results_dir/report/: leaderboard.md and leaderboard.tex (leaderboard.h, first on
-/// the HTML page), summary.md, summary.csv, tables.tex, report.html and
-/// plots/*.png (with plots/plot_data.json, the numbers the plots show). The records'
+/// the HTML page), summary.md, summary.csv, tables.tex, report.html,
+/// plots/*.png (with plots/plot_data.json, the numbers the plots show) and viewer/ (the 3D
+/// viewer, outputs/viewer/viewer_page.h, where the run wrote meshes/). The records'
 /// snapshot paths are taken relative to results_dir; the HTML links results_dir/gallery.html
 /// when it exists. A missing Python or matplotlib costs the plots only (said in the HTML and
 /// on stderr). Throws std::runtime_error when a file cannot be written.

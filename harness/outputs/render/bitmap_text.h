@@ -1,0 +1,24 @@
+// Short labels drawn into images with a built-in 5x7 pixel font: digits, '.', '-', '+',
+// 'e', '%' and space (other characters are skipped as spaces), for the numbers of a colour
+// bar; no font file is needed.
+#pragma once
+
+#include "harness/outputs/render/image.h"
+
+#include <string>
+
+namespace holebench::render {
+
+struct TextOptions {
+  int scale = 2;        ///< pixels per font pixel
+  Rgb colour{0, 0, 0};  ///< linear RGB
+};
+
+/// The width in pixels of `text` (6 font pixels per character, times the scale).
+int text_width(const std::string& text, const TextOptions& options = {});
+
+/// Draws `text` with its top-left corner at (x, y); pixels outside the image are skipped.
+void draw_text(Image& image, int x, int y, const std::string& text,
+               const TextOptions& options = {});
+
+}  // namespace holebench::render

@@ -1,0 +1,54 @@
+// Close-ups of a job's holes beside the whole model, the patch coloured by its distance to
+// the complete model (heat_map.h), open holes outlined, guidance arrows drawn in.
+#pragma once
+
+#include "core/case.h"
+#include "core/method_result.h"
+#include "harness/outputs/render/heat_map.h"
+#include "harness/outputs/render/snapshot.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace holebench::render {
+
+struct CloseUpOptions {
+  int view_size = 320;       ///< each view (close-up or whole model) is square, in pixels
+  int samples_per_axis = 2;  ///< supersampling of every view
+  int max_close_ups = 2;  ///< close-ups of the first holes of the case; the rest in the whole view
+  int colour_bar_width = 84;
+  /// A loop point counts as visible when nothing of the holed mesh lies between the eye and
+  /// it closer than this share of the bounding-box diagonal to the point.
+  double visibility_tolerance_rel_diag = 2e-3;
+};
+
+/// The view of one hole, chosen from the ground truth (which pictures may use; methods may
+/// not): the camera outside the model on the side the missing surface faces, looking into
+/// the hole. Candidate directions: the area-weighted mean outward normal of the removed
+/// faces, that normal tilted by about 27 degrees four ways, and the mean normal of each
+/// removed region; the first with the largest share of the hole's boundary visible (not
+/// hidden by the holed mesh) wins. The hole's boundary fills about two thirds of the view.
+struct HoleView {
+  Camera camera;
+  /// The hole's boundary in the complete model: the vertices of the edges between a removed
+  /// face and a kept one (or the model's own boundary).
+  std::vector<Point> boundary_points;
+  double visible_share = 0.0;  ///< of boundary_points, seen from the camera
+};
+HoleView hole_view(const Case& c, std::size_t hole, const CloseUpOptions& options = {});
+
+/// The whole model seen along `direction`, framed on its bounding sphere.
+Camera whole_model_camera(const Case& c, const Point& direction);
+
+/// The picture of a job: one close-up per hole (up to options.max_close_ups), the whole
+/// model seen from the first hole's side, and the case's colour bar (case_heat_scale), side
+/// by side. Kept faces grey, the patch (new faces) by its distance to the complete model,
+/// open boundary loops of the repaired mesh in magenta, guidance arrows in blue.
+Image job_picture(const Case& c, const MethodResult& result, const CloseUpOptions& options = {});
+
+/// The colour of kept faces in job pictures and in the viewer.
+Rgb kept_colour();
+/// The colour of open holes' outlines.
+Rgb open_hole_colour();
+
+}  // namespace holebench::render

@@ -1,0 +1,45 @@
+// The 3D viewer of `holebench report`: per case (and noise level and seed) the complete,
+// holed and repaired meshes that the run wrote (viewer_mesh.h), drawn with three.js in
+// report.html, with orbit controls, a tick box per mesh and the pictures' error colouring.
+//
+// Everything the page needs is copied into report/viewer/: three.js r111 (Debian's
+// libjs-three: three.min.js and examples/js/controls/OrbitControls.js), the viewer's script,
+// and one data file per case (data/<n>.js: the case's PLY files in base64, loaded by a
+// <script> element when the case is chosen), so the page works offline and from file://.
+#pragma once
+
+#include "harness/results/results_reader.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace holebench::viewer {
+
+struct ViewerOptions {
+  /// Where three.js is installed; empty: $HOLEBENCH_THREE_DIR, else
+  /// /usr/share/javascript/three (Debian's libjs-three).
+  std::filesystem::path three_dir;
+  std::size_t max_cases = 500;  ///< cases beyond it are left out of the viewer (said on the page)
+};
+
+struct ViewerSection {
+  std::string html;                ///< the section of report.html (with its scripts)
+  std::vector<std::string> files;  ///< written, relative to the report folder
+  std::string note;                ///< why there is no viewer; empty when there is one
+  std::size_t cases = 0;           ///< cases in the viewer
+};
+
+/// The three.js folder that options name.
+std::filesystem::path three_dir(const ViewerOptions& options);
+
+/// Writes report_dir/viewer/ for the records of `data` whose meshes are in results_dir/meshes/
+/// and returns the page's section. Without meshes or without three.js the section says why.
+/// Throws std::runtime_error when a file cannot be written.
+ViewerSection write_viewer(const harness::ResultsData& data,
+                           const std::filesystem::path& results_dir,
+                           const std::filesystem::path& report_dir,
+                           const ViewerOptions& options = {});
+
+}  // namespace holebench::viewer

@@ -1,0 +1,299 @@
+#include "harness/outputs/viewer/viewer_script.h"
+
+namespace holebench::viewer {
+
+const char* viewer_script() {
+  return R"JS(// holebench report: the 3D viewer. three.js r111 (global THREE), OrbitControls.
+(function () {
+  'use strict';
+  var config = JSON.parse(document.getElementById('viewer-config').textContent);
+  var cases = JSON.parse(document.getElementById('viewer-cases').textContent);
+  var select = document.getElementById('viewer-case');
+  var toggles = document.getElementById('viewer-toggles');
+  var status = document.getElementById('viewer-status');
+  var canvas = document.getElementById('viewer-canvas');
+  var bar = document.getElementById('viewer-bar');
+  var payloads = {};   // case index -> {name: base64 PLY}
+  var parsed = {};     // case index -> {name: parsed PLY}
+  var shown = {};      // case index -> {name: ticked}
+  var current = -1;
+  var followHash = window.location.hash === '#viewer';
+  var three = null;    // {renderer, scene, camera, controls, group}
+
+  function say(text) { status.textContent = text; }
+
+  function decode(base64) {
+    var binary = window.atob(base64);
+    var bytes = new Uint8Array(binary.length);
+    for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
+    return bytes.buffer;
+  }
+
+  // The viewer meshes' PLY (harness/outputs/viewer/viewer_mesh.h).
+  function parsePly(buffer) {
+    var bytes = new Uint8Array(buffer);
+    var text = '';
+    var headerEnd = -1;
+    for (var i = 0; i < Math.min(bytes.length, 8192); ++i) {
+      text += String.fromCharCode(bytes[i]);
+      if (bytes[i] === 10 && text.slice(-11) === 'end_header\n') { headerEnd = i + 1; break; }
+    }
+    if (headerEnd < 0 || text.indexOf('binary_little_endian') < 0) throw new Error('not a viewer PLY');
+    var counts = {vertex: 0, face: 0, edge: 0};
+    var scale = 0;
+    var direction = null;
+    text.split('\n').forEach(function (line) {
+      var w = line.trim().split(/\s+/);
+      if (w[0] === 'element') counts[w[1]] = parseInt(w[2], 10);
+      if (w[0] === 'comment' && w[1] === 'heat_scale_max_rel_diag') scale = parseFloat(w[2]);
+      if (w[0] === 'comment' && w[1] === 'view_direction') {
+        direction = [parseFloat(w[2]), parseFloat(w[3]), parseFloat(w[4])];
+      }
+    });
+    var view = new DataView(buffer, headerEnd);
+    var at = 0;
+    var positions = new Float32Array(counts.vertex * 3);
+    var quality = new Float32Array(counts.vertex);
+    for (var v = 0; v < counts.vertex; ++v, at += 16) {
+      positions[3 * v] = view.getFloat32(at, true);
+      positions[3 * v + 1] = view.getFloat32(at + 4, true);
+      positions[3 * v + 2] = view.getFloat32(at + 8, true);
+      quality[v] = view.getFloat32(at + 12, true);
+    }
+    var faces = new Int32Array(counts.face * 3);
+    var patch = new Uint8Array(counts.face);
+    for (var f = 0; f < counts.face; ++f) {
+      if (view.getUint8(at) !== 3) throw new Error('a face that is not a triangle');
+      faces[3 * f] = view.getInt32(at + 1, true);
+      faces[3 * f + 1] = view.getInt32(at + 5, true);
+      faces[3 * f + 2] = view.getInt32(at + 9, true);
+      patch[f] = view.getUint8(at + 13);
+      at += 14;
+    }
+    var edges = new Int32Array(counts.edge * 2);
+    for (var e = 0; e < counts.edge; ++e, at += 8) {
+      edges[2 * e] = view.getInt32(at, true);
+      edges[2 * e + 1] = view.getInt32(at + 4, true);
+    }
+    return {positions: positions, quality: quality, faces: faces, patch: patch, edges: edges,
+            scale: scale, direction: direction};
+  }
+
+  function gamma(c) { return [Math.pow(c[0], 1 / 2.2), Math.pow(c[1], 1 / 2.2), Math.pow(c[2], 1 / 2.2)]; }
+
+  // The pictures' heat map (render/heat_map.h): linear between the stops, clamped at the top.
+  function heat(t) {
+    var s = config.stops;
+    t = Math.max(0, Math.min(1, t));
+    if (t >= 1) return s[s.length - 1];
+    var p = t * (s.length - 1);
+    var i = Math.min(Math.floor(p), s.length - 2);
+    var f = p - i;
+    return [0, 1, 2].map(function (k) { return s[i][k] + (s[i + 1][k] - s[i][k]) * f; });
+  }
+
+  function setAttribute(geometry, name, attribute) {
+    if (geometry.setAttribute) geometry.setAttribute(name, attribute);
+    else geometry.addAttribute(name, attribute);
+  }
+
+  // One mesh as a three.js object: flat-shaded triangles (kept faces grey, the patch by its
+  // distance on the case's scale) and the open boundary edges.
+  function buildObject(ply, scaleMax) {
+    var count = ply.faces.length / 3;
+    var positions = new Float32Array(count * 9);
+    var colours = new Float32Array(count * 9);
+    var kept = gamma(config.kept);
+    for (var f = 0; f < count; ++f) {
+      for (var k = 0; k < 3; ++k) {
+        var v = ply.faces[3 * f + k];
+        var c = ply.patch[f] ? gamma(heat(ply.quality[v] / scaleMax)) : kept;
+        for (var d = 0; d < 3; ++d) {
+          positions[9 * f + 3 * k + d] = ply.positions[3 * v + d];
+          colours[9 * f + 3 * k + d] = c[d];
+        }
+      }
+    }
+    var geometry = new THREE.BufferGeometry();
+    setAttribute(geometry, 'position', new THREE.BufferAttribute(positions, 3));
+    setAttribute(geometry, 'color', new THREE.BufferAttribute(colours, 3));
+    geometry.computeVertexNormals();
+    var material = new THREE.MeshLambertMaterial({vertexColors: THREE.VertexColors,
+                                                  side: THREE.DoubleSide});
+    var object = new THREE.Group();
+    object.add(new THREE.Mesh(geometry, material));
+    if (ply.edges.length > 0) {
+      var points = new Float32Array(ply.edges.length * 3);
+      for (var i = 0; i < ply.edges.length; ++i) {
+        for (var j = 0; j < 3; ++j) points[3 * i + j] = ply.positions[3 * ply.edges[i] + j];
+      }
+      var lines = new THREE.BufferGeometry();
+      setAttribute(lines, 'position', new THREE.BufferAttribute(points, 3));
+      var open = gamma(config.open);
+      object.add(new THREE.LineSegments(lines, new THREE.LineBasicMaterial(
+          {color: new THREE.Color(open[0], open[1], open[2])})));
+    }
+    return object;
+  }
+
+  function initThree() {
+    if (three) return three;
+    var renderer = new THREE.WebGLRenderer({canvas: canvas, antialias: true,
+                                            preserveDrawingBuffer: true});
+    renderer.setPixelRatio(window.devicePixelRatio || 1);
+    renderer.setSize(canvas.clientWidth, canvas.clientHeight, false);
+    renderer.setClearColor(new THREE.Color(config.background), 1);
+    var scene = new THREE.Scene();
+    var camera = new THREE.PerspectiveCamera(40, canvas.clientWidth / canvas.clientHeight, 0.01, 100);
+    camera.up.set(0, 0, 1);  // the models' z is up
+    scene.add(new THREE.AmbientLight(0xffffff, 0.45));
+    var light = new THREE.DirectionalLight(0xffffff, 0.6);
+    light.position.set(0, 0, 1);
+    camera.add(light);  // a headlight
+    scene.add(camera);
+    var controls = new THREE.OrbitControls(camera, canvas);
+    var group = new THREE.Group();
+    scene.add(group);
+    three = {renderer: renderer, scene: scene, camera: camera, controls: controls, group: group};
+    controls.addEventListener('change', draw);
+    canvas.addEventListener('pointerdown', function () { followHash = false; });
+    return three;
+  }
+
+  function draw() {
+    three.renderer.render(three.scene, three.camera);
+    if (followHash) canvas.scrollIntoView();
+  }
+
+  function drawBar(scaleMax) {
+    var stops = config.stops.map(function (c) {
+      var g = gamma(c);
+      return 'rgb(' + g.map(function (x) { return Math.round(255 * x); }).join(',') + ')';
+    });
+    bar.innerHTML = '';
+    var strip = document.createElement('div');
+    strip.className = 'viewer-strip';
+    strip.style.background = 'linear-gradient(to top, ' + stops.join(', ') + ')';
+    bar.appendChild(strip);
+    [scaleMax, scaleMax / 2, 0].forEach(function (value, i) {
+      var label = document.createElement('span');
+      label.className = 'viewer-label viewer-label-' + i;
+      label.textContent = value === 0 ? '0' : Number(value.toPrecision(2)).toString();
+      bar.appendChild(label);
+    });
+  }
+
+  // The ticked meshes of the current case, side by side in the order of the list, in rows.
+  function show() {
+    var index = current;
+    var meshes = cases[index].meshes;
+    if (!parsed[index]) {
+      parsed[index] = {};
+      meshes.forEach(function (name) { parsed[index][name] = parsePly(decode(payloads[index][name])); });
+    }
+    var t = initThree();
+    while (t.group.children.length > 0) {
+      var old = t.group.children[0];
+      t.group.remove(old);
+      old.traverse(function (o) { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); });
+    }
+    var ticked = meshes.filter(function (name) { return shown[index][name]; });
+    var scaleMax = 0;
+    meshes.forEach(function (name) { scaleMax = Math.max(scaleMax, parsed[index][name].scale); });
+    if (scaleMax <= 0) scaleMax = 0.01;
+    drawBar(scaleMax);
+    // The camera looks along the first hole's close-up direction (from the ground truth);
+    // the meshes stand side by side across the view, in rows.
+    var d = parsed[index][meshes[0]].direction || [-0.55, 0.75, -0.45];
+    var direction = new THREE.Vector3(d[0], d[1], d[2]).normalize();
+    // z stays up (the orbit's axis): a view straight down or up is tilted a little.
+    if (Math.abs(direction.z) > 0.95) direction.add(new THREE.Vector3(0.35, -0.3, 0)).normalize();
+    var up = new THREE.Vector3(0, 0, 1);
+    var right = new THREE.Vector3().crossVectors(direction, up).normalize();
+    var screenUp = new THREE.Vector3().crossVectors(right, direction).normalize();
+    var box = new THREE.Box3();
+    box.setFromArray(parsed[index][meshes[0]].positions);
+    var one = box.getBoundingSphere(new THREE.Sphere());
+    var columns = Math.max(1, Math.ceil(Math.sqrt(ticked.length)));
+    var rows = Math.max(1, Math.ceil(ticked.length / columns));
+    var step = 2.2 * one.radius;
+    ticked.forEach(function (name, i) {
+      var object = buildObject(parsed[index][name], scaleMax);
+      var column = i % columns - (columns - 1) / 2;
+      var row = Math.floor(i / columns) - (rows - 1) / 2;
+      object.position.copy(right.clone().multiplyScalar(column * step)
+                               .addScaledVector(screenUp, -row * step));
+      t.group.add(object);
+    });
+    var sphere = new THREE.Sphere(one.center.clone(),
+                                  one.radius * Math.max(columns, rows) * 1.15);
+    var distance = 1.1 * sphere.radius / Math.sin(20 * Math.PI / 180);
+    t.camera.position.copy(sphere.center).addScaledVector(direction, -distance);
+    t.camera.near = distance / 100;
+    t.camera.far = distance * 10;
+    t.camera.updateProjectionMatrix();
+    t.controls.target.copy(sphere.center);
+    t.controls.update();
+    draw();
+    say('showing ' + ticked.length + ' of ' + meshes.length + ' meshes' +
+        (ticked.length > 1 ? ', left to right and row by row: ' + ticked.join(', ') : '') + '.');
+  }
+
+  function buildToggles(index) {
+    toggles.innerHTML = '';
+    cases[index].meshes.forEach(function (name) {
+      var label = document.createElement('label');
+      var box = document.createElement('input');
+      box.type = 'checkbox';
+      box.checked = shown[index][name];
+      box.addEventListener('change', function () { shown[index][name] = box.checked; show(); });
+      label.appendChild(box);
+      label.appendChild(document.createTextNode(' ' + name + ' '));
+      toggles.appendChild(label);
+    });
+  }
+
+  function choose(index) {
+    current = index;
+    if (!shown[index]) {
+      shown[index] = {};
+      cases[index].meshes.forEach(function (name) {
+        shown[index][name] = name !== 'complete' && name !== 'holed';
+      });
+    }
+    buildToggles(index);
+    if (payloads[index]) { show(); return; }
+    say('loading ' + cases[index].id + ' ...');
+    var script = document.createElement('script');
+    script.src = cases[index].data;
+    script.onerror = function () { say('error: cannot load ' + cases[index].data); };
+    document.head.appendChild(script);
+  }
+
+  window.holebenchViewer = {
+    receive: function (index, payload) {
+      payloads[index] = payload;
+      if (index !== current) return;
+      try { show(); } catch (e) { say('error: ' + e.message); }
+    }
+  };
+
+  if (typeof THREE === 'undefined' || typeof THREE.OrbitControls === 'undefined') {
+    say('error: three.js did not load (viewer/three.min.js, viewer/OrbitControls.js)');
+    return;
+  }
+  try { initThree(); } catch (e) { say('error: no WebGL here (' + e.message + ')'); return; }
+  cases.forEach(function (c, i) {
+    var option = document.createElement('option');
+    option.value = String(i);
+    option.textContent = c.id;
+    select.appendChild(option);
+  });
+  select.addEventListener('change', function () { choose(parseInt(select.value, 10)); });
+  if (cases.length > 0) choose(0);
+  else say('no case has viewer meshes (run with snapshots)');
+})();
+)JS";
+}
+
+}  // namespace holebench::viewer

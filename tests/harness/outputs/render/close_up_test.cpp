@@ -1,0 +1,144 @@
+#include "harness/outputs/render/close_up.h"
+
+#include "core/boundary_loops.h"
+#include "core/geometry.h"
+#include "generators/case_catalog.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace holebench::render {
+namespace {
+
+/// The boundary loops of the holed mesh that belong to hole `hole`: those with a vertex
+/// among the hole's boundary points in the complete model (the input is clean here).
+std::vector<BoundaryLoop> loops_of_hole(const Case& c, const HoleView& view) {
+  const double tolerance = 1e-9 * bounding_box(c.complete).diagonal();
+  std::vector<BoundaryLoop> out;
+  for (const auto& loop : find_boundary_loops(c.input)) {
+    const Point p = c.input.point(c.input.from_vertex_handle(loop.halfedges.front()));
+    const bool on_hole = std::any_of(view.boundary_points.begin(), view.boundary_points.end(),
+                                     [&](const Point& q) { return (p - q).norm() <= tolerance; });
+    if (on_hole)
+      out.push_back(loop);
+  }
+  return out;
+}
+
+struct LoopInView {
+  std::size_t samples = 0;
+  std::size_t in_image = 0;
+  std::size_t visible = 0;  ///< in the image and not hidden (the depth buffer)
+};
+
+/// Samples each loop edge at its start and middle, projects the samples into the picture of
+/// the holed mesh and compares their depth with the depth buffer's. A sample on the boundary
+/// is seen when the first thing its pixel hit is not closer to the eye than the sample
+/// itself, up to 1 % of the camera distance (the pixel's footprint on a slanted face next to
+/// the boundary).
+LoopInView loop_in_view(const Case& c, const std::vector<BoundaryLoop>& loops,
+                        const Camera& camera) {
+  SnapshotOptions options;
+  options.width = options.height = 240;
+  options.samples_per_axis = 1;
+  const Rendering picture = render_with_depth(c.input, camera, options);
+  const double tolerance = 0.01 * camera.distance;
+  LoopInView out;
+  for (const auto& loop : loops) {
+    for (auto h : loop.halfedges) {
+      const Point a = c.input.point(c.input.from_vertex_handle(h));
+      const Point b = c.input.point(c.input.to_vertex_handle(h));
+      for (const Point& p : {a, (a + b) * 0.5}) {
+        ++out.samples;
+        const auto projection = project(camera, options.width, options.height, p);
+        if (!projection)
+          continue;
+        const int x = static_cast<int>(projection->x);
+        const int y = static_cast<int>(projection->y);
+        if (x < 0 || y < 0 || x >= options.width || y >= options.height)
+          continue;
+        ++out.in_image;
+        // The pixel or one next to it (a loop edge right behind a silhouette).
+        bool seen = false;
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int px = std::clamp(x + dx, 0, options.width - 1);
+            const int py = std::clamp(y + dy, 0, options.height - 1);
+            seen = seen || picture.depth_at(px, py) >= projection->depth - tolerance;
+          }
+        }
+        out.visible += seen ? 1 : 0;
+      }
+    }
+  }
+  return out;
+}
+
+bool is_outer(const HoleTruth& hole) {
+  return hole.labels && hole.labels->orientation == Orientation::Outer;
+}
+
+// The close-up of every outer hole of the B-Rep enumeration (the cases whose labels say
+// orientation outer) shows the hole: every sample of its boundary loops projects into the
+// picture, and at least 95 % of them are not hidden by the model (an edge of the loop seen
+// edge-on may hide a few samples next to it).
+TEST(CloseUp, EveryOuterBrepHoleIsInViewAndNotHidden) {
+  generators::CatalogOptions brep_only;
+  brep_only.include_cad = false;
+  brep_only.families = {"brep"};
+  const generators::CaseCatalog catalog(brep_only);
+  std::size_t outer_holes = 0;
+  for (const auto& descriptor : catalog.cases()) {
+    if (descriptor.id.rfind("brep/", 0) != 0)
+      continue;
+    const Case c = catalog.make(descriptor.id);
+    for (std::size_t hole = 0; hole < c.holes.size(); ++hole) {
+      if (!is_outer(c.holes[hole]))
+        continue;
+      SCOPED_TRACE(descriptor.id + " hole " + std::to_string(hole));
+      ++outer_holes;
+      const HoleView view = hole_view(c, hole);
+      const auto loops = loops_of_hole(c, view);
+      ASSERT_FALSE(loops.empty());
+      const LoopInView seen = loop_in_view(c, loops, view.camera);
+      EXPECT_EQ(seen.in_image, seen.samples);
+      EXPECT_GE(seen.visible, 0.95 * static_cast<double>(seen.samples));
+    }
+  }
+  // CASES.md's outer holes: k = 1, 2, 3 with every boundary kind, and the variants.
+  EXPECT_GE(outer_holes, 20u);
+}
+
+// The view of an inner hole looks at it from outside: the camera's eye is outside the
+// complete model's bounding box and the hole's loop is in view.
+TEST(CloseUp, InnerCornerHoleIsSeenFromOutside) {
+  const Case c = generators::make_case("box/corner");
+  const HoleView view = hole_view(c, 0);
+  const BoundingBox box = bounding_box(c.complete);
+  const Point eye = eye_of(view.camera);
+  bool outside = false;
+  for (int axis = 0; axis < 3; ++axis)
+    outside = outside || eye[axis] < box.min[axis] || eye[axis] > box.max[axis];
+  EXPECT_TRUE(outside);
+  EXPECT_DOUBLE_EQ(view.visible_share, 1.0);
+  const LoopInView seen = loop_in_view(c, find_boundary_loops(c.input), view.camera);
+  EXPECT_EQ(seen.visible, seen.samples);
+}
+
+// A job's picture: a close-up and the whole model (view_size each, 4 pixels apart) and the
+// colour bar; the patch of a cap over the corner shows the heat map's colours.
+TEST(CloseUp, JobPictureHasTheViewsAndTheColourBar) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult nothing;
+  nothing.repaired = c.input;
+  CloseUpOptions options;
+  options.view_size = 64;
+  options.samples_per_axis = 1;
+  const Image picture = job_picture(c, nothing, options);
+  EXPECT_EQ(picture.width, 2 * (64 + 4) + options.colour_bar_width);
+  EXPECT_EQ(picture.height, 64);
+}
+
+}  // namespace
+}  // namespace holebench::render
