@@ -6,6 +6,7 @@
 #include "generators/case_catalog.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/render/snapshot.h"
+#include "harness/run/memory_limit.h"
 #include "harness/run/oracle_user.h"
 #include "methods/common/cgal_random.h"
 #include "methods/external/external_method.h"
@@ -16,40 +17,9 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <new>
 
 namespace holebench::harness {
-
-std::string Job::id() const {
-  return fmt::format("{}|{}|{}|{}|{}", case_id, method_id, user, noise_percent, seed);
-}
-
-const double* JobRecord::metric(const std::string& name) const {
-  for (const auto& m : metrics) {
-    if (m.name == name)
-      return &m.value;
-  }
-  return nullptr;
-}
-
-const char* to_string(JobStatus status) {
-  switch (status) {
-    case JobStatus::Ok:
-      return "ok";
-    case JobStatus::Partial:
-      return "partial";
-    case JobStatus::MethodFailed:
-      return "method_failed";
-    case JobStatus::InvalidInput:
-      return "invalid_input";
-    case JobStatus::Error:
-      return "error";
-    case JobStatus::Crash:
-      return "crash";
-    case JobStatus::Timeout:
-      return "timeout";
-  }
-  return "unknown";
-}
 
 namespace {
 
@@ -85,6 +55,10 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     record.case_family = c.family;
     record.case_kind = c.kind;
     record.stages.push_back({"case", seconds_since(start)});
+  } catch (const std::bad_alloc& e) {
+    record.status = JobStatus::OutOfMemory;
+    record.message = std::string("an allocation failed while making the case: ") + e.what();
+    return record;
   } catch (const std::exception& e) {
     record.status = JobStatus::InvalidInput;
     record.message = e.what();
@@ -121,7 +95,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     copy_holes(result, record);
     record.message = result.message;
     if (result.status == MethodStatus::Failed) {
-      record.status = JobStatus::MethodFailed;
+      // An external program that ran out of memory under the job's limit says so.
+      record.status = message_reports_out_of_memory(result.message) ? JobStatus::OutOfMemory
+                                                                    : JobStatus::MethodFailed;
       return record;
     }
     record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
@@ -144,6 +120,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
   } catch (const InvalidInputError& e) {
     record.status = JobStatus::InvalidInput;
     record.message = e.what();
+  } catch (const std::bad_alloc& e) {
+    record.status = JobStatus::OutOfMemory;
+    record.message = std::string("an allocation failed: ") + e.what();
   } catch (const std::exception& e) {
     record.status = JobStatus::Error;
     record.message = e.what();
