@@ -26,6 +26,8 @@ packages=(
   python3 python3-matplotlib
   # formatting of the sources
   clang-format
+  # coverage-guided fuzzing of the readers (scripts/run_fuzz.sh): clang with libFuzzer
+  clang libclang-rt-14-dev
   # the cluster workflow's test on a throwaway single-node Slurm (tests/slurm/)
   slurmctld slurmd slurm-client munge
 )
