@@ -4,6 +4,14 @@ add_library(holebench_options INTERFACE)
 add_library(holebench::options ALIAS holebench_options)
 target_compile_features(holebench_options INTERFACE cxx_std_17)
 target_compile_options(holebench_options INTERFACE -Wall -Wextra -Wno-unused-parameter)
+if(HOLEBENCH_FUZZ)
+  # Every holebench object instrumented for libFuzzer's coverage and checked by ASan and UBSan
+  # (a UB report stops the fuzzer like a crash); the fuzz targets link -fsanitize=fuzzer.
+  target_compile_options(holebench_options INTERFACE
+                         -fsanitize=fuzzer-no-link,address,undefined
+                         -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
+  target_link_options(holebench_options INTERFACE -fsanitize=address,undefined)
+endif()
 if(HOLEBENCH_SANITIZE)
   target_compile_options(holebench_options INTERFACE -fsanitize=address,undefined
                                                      -fno-omit-frame-pointer)

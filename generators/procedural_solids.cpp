@@ -1,4 +1,5 @@
 #include "generators/procedural_solids.h"
+#include "core/portable_math.h"  // the same bits on every machine
 
 #include "core/mesh_builder.h"
 #include "core/region_segmentation.h"
@@ -108,8 +109,8 @@ TriangleSoup revolve(const std::vector<Ring>& rings, int segments) {
       continue;
     }
     for (int s = 0; s < segments; ++s) {
-      const double angle = 2.0 * M_PI * s / segments;
-      soup.points.emplace_back(ring.radius * std::cos(angle), ring.radius * std::sin(angle),
+      const double angle = 2.0 * kPi * s / segments;
+      soup.points.emplace_back(ring.radius * portable_cos(angle), ring.radius * portable_sin(angle),
                                ring.z);
     }
   }
@@ -134,7 +135,7 @@ TriangleSoup revolve(const std::vector<Ring>& rings, int segments) {
 }
 
 void add_rings(std::vector<Ring>& rings, Ring from, Ring to, double spacing, bool include_last) {
-  const double length = std::hypot(to.radius - from.radius, to.z - from.z);
+  const double length = portable_hypot(to.radius - from.radius, to.z - from.z);
   const int steps = std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9)));
   for (int i = 1; i <= steps; ++i) {
     if (i == steps && !include_last)

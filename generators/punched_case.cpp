@@ -1,4 +1,5 @@
 #include "generators/punched_case.h"
+#include "core/portable_math.h"  // the same bits on every machine
 
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
@@ -33,7 +34,8 @@ Frame frame_at(const Mesh& mesh, VertexHandle vertex) {
 struct IrregularRadius {
   double radius, irregularity, phase3, phase5;
   double at(double angle) const {
-    const double w = (std::sin(3.0 * angle + phase3) + 0.5 * std::sin(5.0 * angle + phase5)) / 1.5;
+    const double w =
+        (portable_sin(3.0 * angle + phase3) + 0.5 * portable_sin(5.0 * angle + phase5)) / 1.5;
     return radius * (1.0 + irregularity * w);
   }
 };
@@ -44,7 +46,7 @@ std::vector<int> select_faces(const Mesh& mesh, VertexHandle target, const Frame
   const Point centre = mesh.point(target);
   auto inside = [&](FaceHandle f) {
     const Point d = face_centroid(mesh, f) - centre;
-    const double angle = std::atan2(OpenMesh::dot(d, frame.v), OpenMesh::dot(d, frame.u));
+    const double angle = portable_atan2(OpenMesh::dot(d, frame.v), OpenMesh::dot(d, frame.u));
     const double r = outer.at(angle);
     const double dist = d.norm();
     return dist <= r && dist >= inner_ratio * r;

@@ -249,6 +249,13 @@ int main(int argc, char** argv) {
   run->add_option("--timeout", timeout,
                   "Seconds a job may take before it is stopped (default: the suite's, 300)")
       ->check(CLI::NonNegativeNumber);
+  std::string memory_limit_text;
+  run->add_option("--memory-limit", memory_limit_text,
+                  "Address space each job's process may take (RLIMIT_AS), e.g. 4G, 512M; 0: "
+                  "none. A job past it gets the status out_of_memory and the run goes on "
+                  "(default: the suite's, 4G)")
+      ->type_name("SIZE")
+      ->check(parsed_by(holebench::harness::parse_memory_size, "SIZE"));
   bool resume = false;
   run->add_flag("--resume", resume,
                 "Keep the records already in DIR/records.jsonl and run the rest");
@@ -497,6 +504,9 @@ int main(int argc, char** argv) {
       if (timeout >= 0.0)
         options.runner.timeout_seconds = timeout;
       options.runner.resume = resume;
+      if (!memory_limit_text.empty())
+        options.runner.memory_limit_bytes =
+            holebench::harness::parse_memory_size(memory_limit_text);
       if (method_repetitions > 0)
         options.method_repetitions = method_repetitions;
       if (!shard_text.empty())

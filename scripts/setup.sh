@@ -29,6 +29,8 @@ packages=(
   libjs-three chromium
   # formatting of the sources
   clang-format
+  # coverage-guided fuzzing of the readers (scripts/run_fuzz.sh): clang with libFuzzer
+  clang libclang-rt-14-dev
   # the cluster workflow's test on a throwaway single-node Slurm (tests/slurm/)
   slurmctld slurmd slurm-client munge
 )

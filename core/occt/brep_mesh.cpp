@@ -1,6 +1,7 @@
 #include "core/occt/brep_mesh.h"
 
 #include "core/occt/brep_file_reader.h"
+#include "core/occt/isolated_read.h"
 #include "core/occt/shape_tessellation.h"
 
 #include <algorithm>
@@ -46,7 +47,14 @@ BrepMesh read_brep_mesh(const std::filesystem::path& path, const TessellationOpt
   // OpenCASCADE's STEP and IGES readers share static state: one file at a time.
   static std::mutex mutex;
   std::lock_guard<std::mutex> lock(mutex);
-  return tessellate_shape(read_brep_shape(path), options, path.string());
+  // In a child process: a crash of OpenCASCADE on a damaged file is an InvalidInputError.
+  TessellatedSoup tessellated = read_and_tessellate_isolated(path, options);
+  BuildOptions build;
+  build.source = path.string();
+  BrepMesh result;
+  result.face_surfaces = std::move(tessellated.face_surfaces);
+  result.mesh = build_mesh(tessellated.soup, build);
+  return result;
 }
 
 }  // namespace holebench::occt

@@ -37,6 +37,9 @@ struct TessellationOptions {
   /// BRepMesh_IncrementalMesh's angular deflection: the largest angle in radians between the
   /// normals of a curved face across one triangle (0.35: at least 18 segments on a circle).
   double angular_deflection_radians = 0.35;
+  /// Seconds that reading and tessellating one file may take (read_brep_mesh reads in a child
+  /// process, which is stopped past it: OpenCASCADE loops on some damaged files); 0: none.
+  double time_limit_seconds = 600.0;
 };
 
 /// A tessellated B-Rep: every triangle's region id is the id of the B-Rep face it lies on.
@@ -54,7 +57,9 @@ struct BrepMesh {
 /// Throws InvalidInputError with a one-line message naming the file: missing file, unknown
 /// extension, a file OpenCASCADE cannot read as its format (with the read status), no faces,
 /// a face that does not tessellate, a mesh that build_mesh rejects.
-/// OpenCASCADE's console messages are silenced.
+/// OpenCASCADE's console messages are silenced. The file is read in a child process
+/// (core/occt/isolated_read.h): a crash of OpenCASCADE on a damaged file is an
+/// InvalidInputError too.
 BrepMesh read_brep_mesh(const std::filesystem::path& path, const TessellationOptions& options = {});
 
 }  // namespace holebench::occt

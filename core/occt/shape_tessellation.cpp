@@ -175,8 +175,8 @@ void drop_unused_points(TriangleSoup& soup) {
   soup.points = std::move(points);
 }
 
-BrepMesh tessellate(const TopoDS_Shape& shape, const TessellationOptions& options,
-                    const std::string& source) {
+TessellatedSoup tessellate(const TopoDS_Shape& shape, const TessellationOptions& options,
+                           const std::string& source) {
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(shape, TopAbs_FACE, faces);
   const double diagonal = exact_bounding_box_diagonal(shape);
@@ -186,31 +186,39 @@ BrepMesh tessellate(const TopoDS_Shape& shape, const TessellationOptions& option
   BRepMesh_IncrementalMesh mesher(shape, options.linear_deflection_rel_diag * diagonal,
                                   /*isRelative=*/false, options.angular_deflection_radians,
                                   /*isInParallel=*/false);
-  BrepMesh result;
+  TessellatedSoup result;
   TriangulationWelder welder(shape, source);
   for (int i = 1; i <= faces.Extent(); ++i) {
     const TopoDS_Face& face = TopoDS::Face(faces(i));
     result.face_surfaces.push_back(surface_type(face));
     welder.add_face(face, i - 1);
   }
-  TriangleSoup soup = welder.take_soup();
-  drop_unused_points(soup);
-  BuildOptions build;
-  build.source = source;
-  result.mesh = build_mesh(soup, build);
+  result.soup = welder.take_soup();
+  drop_unused_points(result.soup);
   return result;
 }
 
 }  // namespace
 
-BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& options,
-                          const std::string& source) {
+TessellatedSoup tessellate_shape_soup(const TopoDS_Shape& shape, const TessellationOptions& options,
+                                      const std::string& source) {
   try {
     return tessellate(shape, options, source);
   } catch (const Standard_Failure& e) {
     throw InvalidInputError(fmt::format("{}: OpenCASCADE failed tessellating it ({}: {})", source,
                                         e.DynamicType()->Name(), e.GetMessageString()));
   }
+}
+
+BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& options,
+                          const std::string& source) {
+  TessellatedSoup tessellated = tessellate_shape_soup(shape, options, source);
+  BuildOptions build;
+  build.source = source;
+  BrepMesh result;
+  result.face_surfaces = std::move(tessellated.face_surfaces);
+  result.mesh = build_mesh(tessellated.soup, build);
+  return result;
 }
 
 }  // namespace holebench::occt

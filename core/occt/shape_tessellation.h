@@ -4,6 +4,8 @@
 // Before any OpenCASCADE header: OpenCASCADE's `Handle` macro breaks OpenMesh's headers.
 #include "core/occt/brep_mesh.h"
 
+#include "core/mesh_builder.h"
+
 #include <TopoDS_Shape.hxx>
 
 #include <string>
@@ -28,5 +30,14 @@ namespace holebench::occt {
 /// \bug An open shell gives an open mesh; callers that need a closed one check it.
 BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& options,
                           const std::string& source = "<shape>");
+
+/// The welded triangles before build_mesh, with the faces' surface types: what
+/// tessellate_shape builds its mesh from (build_mesh with mark_original and `source`).
+struct TessellatedSoup {
+  TriangleSoup soup;
+  std::vector<SurfaceType> face_surfaces;
+};
+TessellatedSoup tessellate_shape_soup(const TopoDS_Shape& shape, const TessellationOptions& options,
+                                      const std::string& source = "<shape>");
 
 }  // namespace holebench::occt

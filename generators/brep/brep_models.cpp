@@ -1,4 +1,5 @@
 #include "generators/brep/brep_models.h"
+#include "core/portable_math.h"  // the same bits on every machine
 
 #include "generators/brep/voxel_solid.h"
 
@@ -220,11 +221,10 @@ Polyhedron make_triangular_prism_model() {
 
 Polyhedron make_pyramid_model(int sides) {
   const double radius = 6.0, height = 6.0;
-  const double pi = std::acos(-1.0);
   std::vector<Point> base;
   for (int i = 0; i < sides; ++i) {
-    const double angle = 2.0 * pi * i / sides;
-    base.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.0);
+    const double angle = 2.0 * kPi * i / sides;
+    base.emplace_back(radius * portable_cos(angle), radius * portable_sin(angle), 0.0);
   }
   const Point apex(0.0, 0.0, height);
   Polyhedron p;

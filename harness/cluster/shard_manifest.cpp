@@ -1,5 +1,7 @@
 #include "harness/cluster/shard_manifest.h"
 
+#include "core/atomic_file.h"
+
 #include "core/errors.h"
 #include "harness/cluster/shard.h"
 
@@ -55,14 +57,7 @@ void write_shard_manifest(const std::filesystem::path& dir, const ShardManifest&
   j["job_ids"] = manifest.job_ids;
   std::filesystem::create_directories(dir);
   const auto path = shard_manifest_path(dir);
-  const auto temporary = path.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << j.dump(2) << '\n';
-    if (!out)
-      throw std::runtime_error("cannot write " + temporary);
-  }
-  std::filesystem::rename(temporary, path);  // readers never see half a manifest
+  write_file_atomically(path, j.dump(2) + "\n");  // readers never see half a manifest
 }
 
 ShardManifest read_shard_manifest(const std::filesystem::path& dir) {

@@ -1,22 +1,71 @@
 #include "harness/results/record_json.h"
 
+#include "harness/results/json_fields.h"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 namespace holebench::harness {
 namespace {
 
-Point point_from(const nlohmann::json& j) {
+constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
+constexpr std::int64_t kSizeMax = std::numeric_limits<std::int64_t>::max();
+
+// [x, y, z]; anything else (written by an older version) is the origin.
+Point point_from(const nlohmann::json& j, const std::string& name) {
   if (!j.is_array() || j.size() != 3)
     return Point(0, 0, 0);
-  return Point(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
+  return Point(as_number(j[0], name + "[0]"), as_number(j[1], name + "[1]"),
+               as_number(j[2], name + "[2]"));
 }
 
-template <typename T>
-T value_or(const nlohmann::json& j, const char* key, T fallback) {
+// An object of numbers, {"name": seconds, ...}; other values are skipped (a NaN is written as
+// null).
+std::vector<PhaseTiming> timings_from(const nlohmann::json& j, const char* key) {
+  std::vector<PhaseTiming> timings;
   const auto it = j.find(key);
-  if (it == j.end() || it->is_null())
+  if (it == j.end() || !it->is_object())
+    return timings;
+  for (const auto& [name, value] : it->items()) {
+    if (value.is_number())
+      timings.push_back({name, value.get<double>()});
+  }
+  return timings;
+}
+
+// A number, or the fallback for null (a NaN or an infinity is written as null).
+double number_or_null(const nlohmann::json& j, const std::string& parent, const char* key,
+                      double fallback) {
+  const auto it = j.find(key);
+  if (it != j.end() && it->is_number_float() && !std::isfinite(it->get<double>()))
     return fallback;
-  return it->get<T>();
+  return number_field(j, parent, key, fallback);
+}
+
+HoleRecord hole_from_json(const nlohmann::json& h, const std::string& name) {
+  if (!h.is_object())
+    throw std::invalid_argument("field \"" + name + "\": expected an object, got " + quote_json(h));
+  HoleRecord hole;
+  hole.hole_index = static_cast<int>(integer_field(h, name, "hole_index", 0, -kIntMax, kIntMax));
+  hole.loop_size = static_cast<std::size_t>(integer_field(h, name, "loop_size", 0, 0, kSizeMax));
+  if (h.contains("centroid"))
+    hole.centroid = point_from(h["centroid"], field_name(name, "centroid"));
+  hole.closed = bool_field(h, name, "closed", false);
+  hole.new_faces = static_cast<std::size_t>(integer_field(h, name, "new_faces", 0, 0, kSizeMax));
+  hole.note = string_field(h, name, "note", "");
+  hole.fallback = string_field(h, name, "fallback", "");
+  if (h.contains("arrow") && h["arrow"].is_object()) {
+    const auto& arrow = h["arrow"];
+    const std::string arrow_name = field_name(name, "arrow");
+    hole.arrow = GuidanceArrow{
+        point_from(arrow.value("position", nlohmann::json()), arrow_name + ".position"),
+        point_from(arrow.value("direction", nlohmann::json()), arrow_name + ".direction")};
+  }
+  if (h.contains("classification") && h["classification"].is_object())
+    hole.classification = labels_from_json(h["classification"], field_name(name, "classification"));
+  return hole;
 }
 
 }  // namespace
@@ -28,7 +77,7 @@ nlohmann::ordered_json point_to_json(const Point& p) {
 JobStatus job_status_from_string(const std::string& name) {
   for (auto status :
        {JobStatus::Ok, JobStatus::Partial, JobStatus::MethodFailed, JobStatus::InvalidInput,
-        JobStatus::Error, JobStatus::Crash, JobStatus::Timeout}) {
+        JobStatus::Error, JobStatus::Crash, JobStatus::Timeout, JobStatus::OutOfMemory}) {
     if (name == to_string(status))
       return status;
   }
@@ -53,14 +102,23 @@ nlohmann::ordered_json context_to_json(const RunContext& context) {
 }
 
 RunContext context_from_json(const nlohmann::json& j) {
+  const std::string p = "context";
+  if (!j.is_object())
+    throw std::invalid_argument("field \"context\": expected an object, got " + quote_json(j));
   RunContext context;
-  context.schema_version = value_or(j, "schema_version", 0);
-  context.code_version = value_or<std::string>(j, "code_version", "");
-  context.build_type = value_or<std::string>(j, "build_type", "");
-  context.host = value_or<std::string>(j, "host", "");
-  context.created_utc = value_or<std::string>(j, "created_utc", "");
-  context.suite = value_or<std::string>(j, "suite", "");
-  context.shard = value_or<std::string>(j, "shard", "");
+  context.schema_version = static_cast<int>(
+      integer_field(j, p, "schema_version", kResultsSchemaVersion, -kIntMax, kIntMax));
+  if (context.schema_version != kResultsSchemaVersion) {
+    throw std::invalid_argument(
+        "field \"context.schema_version\": " + std::to_string(context.schema_version) +
+        " is not the version this holebench reads (" + std::to_string(kResultsSchemaVersion) + ")");
+  }
+  context.code_version = string_field(j, p, "code_version", "");
+  context.build_type = string_field(j, p, "build_type", "");
+  context.host = string_field(j, p, "host", "");
+  context.created_utc = string_field(j, p, "created_utc", "");
+  context.suite = string_field(j, p, "suite", "");
+  context.shard = string_field(j, p, "shard", "");
   if (j.contains("libraries") && j["libraries"].is_object()) {
     for (const auto& [name, version] : j["libraries"].items()) {
       context.libraries.emplace_back(
@@ -90,27 +148,33 @@ nlohmann::ordered_json labels_to_json(const HoleLabels& labels) {
   return j;
 }
 
-HoleLabels labels_from_json(const nlohmann::json& j) {
+HoleLabels labels_from_json(const nlohmann::json& j, const std::string& p) {
   HoleLabels labels;
-  labels.k = value_or(j, "k", 0);
-  labels.regions = value_or<std::vector<int>>(j, "regions", {});
-  for (const auto& t : value_or<std::vector<std::string>>(j, "transitions", {})) {
+  labels.k = static_cast<int>(integer_field(j, p, "k", 0, -kIntMax, kIntMax));
+  if (j.contains("regions") && !j["regions"].is_null()) {
+    const auto& regions = j["regions"];
+    if (!regions.is_array())
+      throw std::invalid_argument("field \"" + field_name(p, "regions") + "\": expected a list");
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+      labels.regions.push_back(static_cast<int>(
+          as_integer(regions[i], field_name(p, "regions") + "[" + std::to_string(i) + "]", -kIntMax,
+                     kIntMax)));
+    }
+  }
+  for (const auto& t : string_list_field(j, p, "transitions", {}))
     labels.transitions.push_back(t == "reflex" ? Convexity::Reflex : Convexity::Convex);
-  }
-  labels.orientation = value_or<std::string>(j, "orientation", "inner") == "outer"
-                           ? Orientation::Outer
-                           : Orientation::Inner;
-  labels.orientation_known = value_or(j, "orientation_known", true);
-  for (const auto& b : value_or<std::vector<std::string>>(j, "boundary_kinds", {})) {
+  labels.orientation = string_field(j, p, "orientation", "inner") == "outer" ? Orientation::Outer
+                                                                             : Orientation::Inner;
+  labels.orientation_known = bool_field(j, p, "orientation_known", true);
+  for (const auto& b : string_list_field(j, p, "boundary_kinds", {}))
     labels.boundary_kinds.push_back(b == "inner" ? BoundaryKind::Inner : BoundaryKind::Outer);
-  }
-  labels.linearly_dependent_faces = value_or(j, "linearly_dependent_faces", false);
-  labels.size = value_or(j, "size", 0.0);
-  labels.structure_size = value_or(j, "structure_size", 0.0);
-  labels.expected_decision = value_or<std::string>(j, "expected_decision", "guide") == "close"
+  labels.linearly_dependent_faces = bool_field(j, p, "linearly_dependent_faces", false);
+  labels.size = number_or_null(j, p, "size", 0.0);
+  labels.structure_size = number_or_null(j, p, "structure_size", 0.0);
+  labels.expected_decision = string_field(j, p, "expected_decision", "guide") == "close"
                                  ? Decision::CloseAutomatically
                                  : Decision::Guide;
-  labels.known_weak_spot = value_or<std::string>(j, "known_weak_spot", "");
+  labels.known_weak_spot = string_field(j, p, "known_weak_spot", "");
   return labels;
 }
 
@@ -177,49 +241,51 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
 }
 
 JobRecord record_from_json(const nlohmann::json& j) {
+  if (!j.is_object())
+    throw std::invalid_argument("a record is not a JSON object: " + quote_json(j));
   JobRecord record;
-  if (!j.contains("case_id") || !j.contains("method")) {
-    throw std::invalid_argument("a record without case_id or method");
+  for (const char* required : {"case_id", "method"}) {
+    if (!j.contains(required) || j[required].is_null())
+      throw std::invalid_argument(std::string("field \"") + required + "\" is missing");
   }
-  record.job.case_id = j["case_id"].get<std::string>();
-  record.job.method_id = j["method"].get<std::string>();
-  record.job.seed = value_or<std::uint64_t>(j, "seed", 0);
+  record.job.case_id = string_field(j, "", "case_id", "");
+  record.job.method_id = string_field(j, "", "method", "");
+  record.job.seed = unsigned_field(j, "", "seed", 0);
   if (j.contains("method_options") && j["method_options"].is_object() &&
       j["method_options"].contains("command")) {
     ExternalMethodSpec spec;
     spec.name = record.job.method_id;
-    spec.command = value_or<std::string>(j["method_options"], "command", "");
+    spec.command = string_field(j["method_options"], "method_options", "command", "");
     spec.vertex_tolerance_rel_diag =
-        value_or(j["method_options"], "vertex_tolerance_rel_diag", 0.0);
+        number_field(j["method_options"], "method_options", "vertex_tolerance_rel_diag", 0.0);
     record.job.external = spec;
   }
-  record.job.noise_percent = value_or(j, "noise_percent", 0.0);
-  record.job.user = value_or<std::string>(j, "user", "no_user");
-  record.case_family = value_or<std::string>(j, "case_family", "");
-  record.case_kind = value_or<std::string>(j, "case_kind", "");
+  record.job.noise_percent = number_field(j, "", "noise_percent", 0.0);
+  record.job.user = string_field(j, "", "user", "no_user");
+  record.case_family = string_field(j, "", "case_family", "");
+  record.case_kind = string_field(j, "", "case_kind", "");
   record.user = record.job.user;
-  record.user_interventions = value_or(j, "user_interventions", 0);
+  record.user_interventions =
+      static_cast<int>(integer_field(j, "", "user_interventions", 0, 0, kIntMax));
   if (j.contains("user_interventions_by_kind") && j["user_interventions_by_kind"].is_object()) {
     for (const auto& [kind, count] : j["user_interventions_by_kind"].items()) {
-      if (count.is_number_integer())
+      if (count.is_number_integer() && count.get<std::int64_t>() >= 0 &&
+          count.get<std::int64_t>() <= kIntMax)
         record.user_interventions_by_kind[kind] = count.get<int>();
     }
   }
-  record.status = job_status_from_string(value_or<std::string>(j, "status", "ok"));
-  record.message = value_or<std::string>(j, "message", "");
-  if (j.contains("metrics") && j["metrics"].is_object()) {
-    for (const auto& [name, value] : j["metrics"].items()) {
-      if (value.is_number())
-        record.metrics.push_back({name, value.get<double>()});
-    }
+  try {
+    record.status = job_status_from_string(string_field(j, "", "status", "ok"));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("field \"status\": ") + e.what());
   }
-  if (j.contains("phases_s") && j["phases_s"].is_object()) {
-    for (const auto& [name, value] : j["phases_s"].items()) {
-      if (value.is_number())
-        record.phases.push_back({name, value.get<double>()});
-    }
-  }
-  record.method_seconds = value_or(j, "method_seconds", 0.0);
+  record.message = string_field(j, "", "message", "");
+  // Metrics: numbers are kept; a NaN or an infinity is written as null and left out
+  // (holebench validate reports it).
+  for (const auto& metric : timings_from(j, "metrics"))
+    record.metrics.push_back({metric.phase, metric.seconds});
+  record.phases = timings_from(j, "phases_s");
+  record.method_seconds = number_or_null(j, "", "method_seconds", 0.0);
   if (j.contains("method_run_seconds") && j["method_run_seconds"].is_array()) {
     for (const auto& value : j["method_run_seconds"]) {
       if (value.is_number())
@@ -228,34 +294,12 @@ JobRecord record_from_json(const nlohmann::json& j) {
   } else {
     record.method_run_seconds.push_back(record.method_seconds);
   }
-  if (j.contains("stages_s") && j["stages_s"].is_object()) {
-    for (const auto& [name, value] : j["stages_s"].items()) {
-      if (value.is_number())
-        record.stages.push_back({name, value.get<double>()});
-    }
-  }
+  record.stages = timings_from(j, "stages_s");
   if (j.contains("holes") && j["holes"].is_array()) {
-    for (const auto& h : j["holes"]) {
-      HoleRecord hole;
-      hole.hole_index = value_or(h, "hole_index", 0);
-      hole.loop_size = value_or<std::size_t>(h, "loop_size", 0);
-      if (h.contains("centroid"))
-        hole.centroid = point_from(h["centroid"]);
-      hole.closed = value_or(h, "closed", false);
-      hole.new_faces = value_or<std::size_t>(h, "new_faces", 0);
-      hole.note = value_or<std::string>(h, "note", "");
-      hole.fallback = value_or<std::string>(h, "fallback", "");
-      if (h.contains("arrow") && h["arrow"].is_object()) {
-        hole.arrow = GuidanceArrow{point_from(h["arrow"].value("position", nlohmann::json())),
-                                   point_from(h["arrow"].value("direction", nlohmann::json()))};
-      }
-      if (h.contains("classification") && h["classification"].is_object()) {
-        hole.classification = labels_from_json(h["classification"]);
-      }
-      record.holes.push_back(std::move(hole));
-    }
+    for (std::size_t i = 0; i < j["holes"].size(); ++i)
+      record.holes.push_back(hole_from_json(j["holes"][i], "holes[" + std::to_string(i) + "]"));
   }
-  record.snapshot = value_or<std::string>(j, "snapshot", "");
+  record.snapshot = string_field(j, "", "snapshot", "");
   return record;
 }
 

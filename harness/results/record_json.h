@@ -11,16 +11,20 @@
 namespace holebench::harness {
 
 nlohmann::ordered_json context_to_json(const RunContext& context);
+/// Throws std::invalid_argument for a schema_version other than kResultsSchemaVersion.
 RunContext context_from_json(const nlohmann::json& j);
 
 nlohmann::ordered_json record_to_json(const JobRecord& record);
-/// Throws std::invalid_argument for a record without a job id or with an unknown status.
+/// Throws std::invalid_argument naming the field for a record without case_id or method, with
+/// an unknown status, or with a field of the wrong type or out of its type's range (a string
+/// for a number, a negative count, an integer too large for its type).
 JobRecord record_from_json(const nlohmann::json& j);
 
 nlohmann::ordered_json point_to_json(const Point& p);  ///< [x, y, z]
 
 nlohmann::ordered_json labels_to_json(const HoleLabels& labels);
-HoleLabels labels_from_json(const nlohmann::json& j);
+/// `parent`: the field's name in error messages.
+HoleLabels labels_from_json(const nlohmann::json& j, const std::string& parent = "classification");
 
 /// A status from its name ("ok", "partial", ...); throws std::invalid_argument otherwise.
 JobStatus job_status_from_string(const std::string& name);

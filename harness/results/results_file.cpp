@@ -1,5 +1,6 @@
 #include "harness/results/results_file.h"
 
+#include "core/atomic_file.h"
 #include "harness/outputs/render/image.h"
 #include "harness/results/record_json.h"
 #include "holebench/version.h"
@@ -48,24 +49,6 @@ RunContext current_context(const std::string& suite) {
 
 namespace {
 
-// Writes through a temporary file beside `path`, renamed over it once complete: a reader
-// (a report, a shard's status check) never sees a half-written file, even when the process
-// is killed while writing.
-template <typename Write>
-void write_atomically(const std::filesystem::path& path, Write write) {
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out)
-      throw std::runtime_error("cannot write " + path.string());
-    write(out);
-    out.flush();
-    if (!out)
-      throw std::runtime_error("cannot write " + path.string());
-  }
-  std::filesystem::rename(temporary, path);
-}
-
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos)
     return text;
@@ -87,11 +70,11 @@ void write_results_json(const std::filesystem::path& path, const RunContext& con
   j["results"] = nlohmann::ordered_json::array();
   for (const auto& record : records)
     j["results"].push_back(record_to_json(record));
-  write_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << '\n'; });
+  write_file_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
 void write_results_csv(const std::filesystem::path& path, const std::vector<JobRecord>& records) {
-  write_atomically(path, [&records](std::ostream& out) {
+  write_file_atomically(path, [&records](std::ostream& out) {
     out << "job_id,case_id,method,user,seed,case_family,case_kind,noise_percent,status,metric,"
            "value\n";
     for (const auto& record : records) {

@@ -6,28 +6,6 @@
 
 namespace holebench::harness {
 
-bool wildcard_match(const std::string& pattern, const std::string& text) {
-  // Iterative matching with one backtrack point for the last '*'.
-  std::size_t p = 0, t = 0, star = std::string::npos, mark = 0;
-  while (t < text.size()) {
-    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
-      ++p;
-      ++t;
-    } else if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      mark = t;
-    } else if (star != std::string::npos) {
-      p = star + 1;
-      t = ++mark;
-    } else {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*')
-    ++p;
-  return p == pattern.size();
-}
-
 namespace {
 
 // Whether `pattern` could name cases of a model the catalog skipped: its first two segments
@@ -74,18 +52,6 @@ std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatal
       selected.push_back(all[i]);
   }
   return selected;
-}
-
-std::vector<std::string> families_of_patterns(const std::vector<std::string>& patterns) {
-  std::vector<std::string> families;
-  for (const auto& pattern : patterns) {
-    const std::string family = pattern.substr(0, pattern.find('/'));
-    if (family.find_first_of("*?") != std::string::npos)
-      return {};
-    if (std::find(families.begin(), families.end(), family) == families.end())
-      families.push_back(family);
-  }
-  return families;
 }
 
 const std::vector<std::string>& default_case_patterns() {

@@ -2,14 +2,12 @@
 #pragma once
 
 #include "generators/case_catalog.h"
+#include "harness/run/case_pattern.h"
 
 #include <string>
 #include <vector>
 
 namespace holebench::harness {
-
-/// Whether `text` matches the wildcard `pattern` as a whole.
-bool wildcard_match(const std::string& pattern, const std::string& text);
 
 /// Prints each model the catalog skipped, with its reason, to stderr.
 void print_skipped_models(const generators::CaseCatalog& catalog);
@@ -21,10 +19,6 @@ void print_skipped_models(const generators::CaseCatalog& catalog);
 /// commands print), so that the rest of the selection still runs.
 std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,
                                                      const std::vector<std::string>& patterns);
-
-/// The families (the id's first component) that `patterns` can match; empty when a pattern
-/// starts with a wildcard (any family).
-std::vector<std::string> families_of_patterns(const std::vector<std::string>& patterns);
 
 /// The default suite of `holebench run` (until named suites exist): the skeleton's box
 /// holes, every synthetic B-Rep case, and the small holes of the procedural solids.

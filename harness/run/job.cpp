@@ -7,6 +7,7 @@
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/image.h"
 #include "harness/outputs/viewer/viewer_mesh.h"
+#include "harness/run/memory_limit.h"
 #include "harness/run/oracle_user.h"
 #include "methods/common/cgal_random.h"
 #include "methods/external/external_method.h"
@@ -17,40 +18,9 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <new>
 
 namespace holebench::harness {
-
-std::string Job::id() const {
-  return fmt::format("{}|{}|{}|{}|{}", case_id, method_id, user, noise_percent, seed);
-}
-
-const double* JobRecord::metric(const std::string& name) const {
-  for (const auto& m : metrics) {
-    if (m.name == name)
-      return &m.value;
-  }
-  return nullptr;
-}
-
-const char* to_string(JobStatus status) {
-  switch (status) {
-    case JobStatus::Ok:
-      return "ok";
-    case JobStatus::Partial:
-      return "partial";
-    case JobStatus::MethodFailed:
-      return "method_failed";
-    case JobStatus::InvalidInput:
-      return "invalid_input";
-    case JobStatus::Error:
-      return "error";
-    case JobStatus::Crash:
-      return "crash";
-    case JobStatus::Timeout:
-      return "timeout";
-  }
-  return "unknown";
-}
 
 namespace {
 
@@ -86,6 +56,10 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     record.case_family = c.family;
     record.case_kind = c.kind;
     record.stages.push_back({"case", seconds_since(start)});
+  } catch (const std::bad_alloc& e) {
+    record.status = JobStatus::OutOfMemory;
+    record.message = std::string("an allocation failed while making the case: ") + e.what();
+    return record;
   } catch (const std::exception& e) {
     record.status = JobStatus::InvalidInput;
     record.message = e.what();
@@ -122,7 +96,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     copy_holes(result, record);
     record.message = result.message;
     if (result.status == MethodStatus::Failed) {
-      record.status = JobStatus::MethodFailed;
+      // An external program that ran out of memory under the job's limit says so.
+      record.status = message_reports_out_of_memory(result.message) ? JobStatus::OutOfMemory
+                                                                    : JobStatus::MethodFailed;
       return record;
     }
     record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
@@ -147,6 +123,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
   } catch (const InvalidInputError& e) {
     record.status = JobStatus::InvalidInput;
     record.message = e.what();
+  } catch (const std::bad_alloc& e) {
+    record.status = JobStatus::OutOfMemory;
+    record.message = std::string("an allocation failed: ") + e.what();
   } catch (const std::exception& e) {
     record.status = JobStatus::Error;
     record.message = e.what();

@@ -39,6 +39,10 @@ enum class JobStatus {
   Error,         ///< an exception escaped the method or a metric
   Crash,         ///< the job's process died (a signal: segmentation fault, abort, ...)
   Timeout,       ///< the job ran past the time limit and was stopped
+  /// The job ran out of memory under its limit (harness/run/memory_limit.h): an allocation
+  /// failed (std::bad_alloc, an external program's MemoryError or ENOMEM), or the kernel
+  /// killed its process (SIGKILL that the runner did not send).
+  OutOfMemory,
 };
 const char* to_string(JobStatus status);
 

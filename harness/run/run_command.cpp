@@ -99,6 +99,7 @@ RunOptions run_options_from_suite(const Suite& suite) {
   options.catalog.include_cad = suite.include_cad;
   options.evaluation = suite.evaluation;
   options.runner.timeout_seconds = suite.timeout_seconds;
+  options.runner.memory_limit_bytes = suite.memory_limit_bytes;
   options.method_repetitions = suite.method_repetitions;
   options.suite_name = suite.name;
   return options;

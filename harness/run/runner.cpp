@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <new>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -58,7 +59,8 @@ std::filesystem::path make_job_temporary_dir() {
   return pattern;
 }
 
-void write_all(int fd, const std::string& text) {
+// Writes all of `text`; the error number of a failed write, 0 when all was written.
+int write_all(int fd, const std::string& text) {
   const char* data = text.data();
   std::size_t left = text.size();
   while (left > 0) {
@@ -66,14 +68,38 @@ void write_all(int fd, const std::string& text) {
     if (n < 0) {
       if (errno == EINTR)
         continue;
-      return;
+      return errno;
     }
     data += n;
     left -= static_cast<std::size_t>(n);
   }
+  return 0;
 }
 
-Child start_child(const Job& job, std::size_t index, const JobFunction& run_one) {
+// Appends a record's line to records.jsonl and flushes it to disk; a failure (disk full)
+// stops the run with an error naming the file: the records before it are kept.
+void append_record(int fd, const std::string& line, const std::filesystem::path& path) {
+  int error = write_all(fd, line);
+  if (!error && ::fsync(fd) != 0 && errno != EINVAL)
+    error = errno;
+  if (error) {
+    throw std::runtime_error("cannot append to " + path.string() + ": " + std::strerror(error) +
+                             " (the records before this one are kept; --resume continues)");
+  }
+}
+
+// The record of a job whose allocation failed in the child.
+JobRecord out_of_memory_record(const Job& job, const std::string& what) {
+  JobRecord record;
+  record.job = job;
+  record.user = job.user;
+  record.status = JobStatus::OutOfMemory;
+  record.message = "an allocation failed (" + what + ")";
+  return record;
+}
+
+Child start_child(const Job& job, std::size_t index, const JobFunction& run_one,
+                  std::uint64_t memory_limit_bytes) {
   const std::filesystem::path temporary_dir = make_job_temporary_dir();
   int fds[2];
   if (::pipe(fds) != 0)
@@ -94,12 +120,16 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one)
     ::setpgid(0, 0);
     ::setenv("TMPDIR", temporary_dir.c_str(), 1);
     ::close(fds[0]);
+    // The job's memory limit, inherited by every program it starts.
+    apply_memory_limit(memory_limit_bytes);
     // The child: run the job, send its record, leave without running the parent's atexit
     // handlers or destructors.
     // Nothing may escape the child: it must never return into the parent's code.
     JobRecord record;
     try {
       record = run_one(job);
+    } catch (const std::bad_alloc& e) {
+      record = out_of_memory_record(job, e.what());
     } catch (const std::exception& e) {
       record.job = job;
       record.status = JobStatus::Error;
@@ -138,6 +168,12 @@ JobRecord finish_child(const Child& child, const Job& job, int wait_status) {
   if (child.timed_out) {
     record.status = JobStatus::Timeout;
     record.message = "stopped after the time limit";
+  } else if (WIFSIGNALED(wait_status) && WTERMSIG(wait_status) == SIGKILL) {
+    // Not the runner's SIGKILL (that is a timeout): the kernel's out-of-memory killer.
+    record.status = JobStatus::OutOfMemory;
+    record.message =
+        "the job's process was killed (SIGKILL, not sent by the runner): most likely by the "
+        "kernel's out-of-memory killer";
   } else if (WIFSIGNALED(wait_status)) {
     record.status = JobStatus::Crash;
     record.message = std::string("the job's process died: ") + strsignal(WTERMSIG(wait_status));
@@ -212,7 +248,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
     if (existing && existing.tellg() > 0) {
       existing.seekg(-1, std::ios::end);
       if (existing.get() != '\n')
-        write_all(fd, "\n");
+        append_record(fd, "\n", records_path);
     }
   }
 
@@ -239,7 +275,8 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
   std::size_t next = 0;
   while (next < pending.size() || !running.empty()) {
     while (next < pending.size() && static_cast<int>(running.size()) < workers) {
-      running.push_back(start_child(jobs[pending[next]], pending[next], run_one));
+      running.push_back(
+          start_child(jobs[pending[next]], pending[next], run_one, options.memory_limit_bytes));
       ++next;
     }
     std::vector<pollfd> fds;
@@ -274,8 +311,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       std::filesystem::remove_all(child.temporary_dir, ignored);
       const Job& job = jobs[child.job_index];
       JobRecord record = finish_child(child, job, status);
-      write_all(fd, record_to_json_line(record) + "\n");
-      ::fsync(fd);
+      append_record(fd, record_to_json_line(record) + "\n", records_path);
       failures += record.status != JobStatus::Ok ? 1 : 0;
       ++finished;
       progress.update(finished, failures, job.id() + " " + to_string(record.status));

@@ -1,6 +1,11 @@
 // The parallel job runner: every job in its own process, so that an exception, a crash or a
 // hang of a method becomes that job's status and the run goes on.
 //
+// Each child's address space is limited (RunnerOptions::memory_limit_bytes, RLIMIT_AS:
+// harness/run/memory_limit.h): a job that allocates past it gets the status out_of_memory
+// (std::bad_alloc caught in the child, or the child killed by a SIGKILL the runner did not
+// send: the kernel's out-of-memory killer), and the run goes on.
+//
 // Each job runs in a child process (fork) that sends its record back through a pipe. The
 // parent keeps up to `workers` children running, stops a child that passes the timeout
 // (status timeout; the child leads a process group, and the whole group is stopped, so a
@@ -16,7 +21,9 @@
 #pragma once
 
 #include "harness/run/job.h"
+#include "harness/run/memory_limit.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <vector>
@@ -26,8 +33,10 @@ namespace holebench::harness {
 struct RunnerOptions {
   int workers = 0;                 ///< processes at once; 0: the number of cores
   double timeout_seconds = 300.0;  ///< per job; 0: none
-  bool resume = false;             ///< keep the records already in records.jsonl
-  bool progress = true;            ///< progress on stderr: done/total, rate, ETA, failures
+  /// Address space of each job's process (RLIMIT_AS), in bytes; 0: none.
+  std::uint64_t memory_limit_bytes = kDefaultMemoryLimitBytes;
+  bool resume = false;   ///< keep the records already in records.jsonl
+  bool progress = true;  ///< progress on stderr: done/total, rate, ETA, failures
 };
 
 struct RunnerResult {

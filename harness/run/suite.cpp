@@ -1,7 +1,10 @@
 #include "harness/run/suite.h"
 
 #include "core/errors.h"
+#include "harness/results/json_fields.h"
 #include "methods/external/predefined_external_methods.h"
+
+#include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
@@ -55,21 +58,36 @@ std::filesystem::path default_suites_dir() {
 
 namespace {
 
-MetricTolerance tolerance_from(const nlohmann::json& j, MetricTolerance base) {
+double non_negative(double value, const std::string& name) {
+  if (value < 0.0)
+    throw std::invalid_argument("field \"" + name + "\": " + fmt::format("{}", value) +
+                                " is negative");
+  return value;
+}
+
+MetricTolerance tolerance_from(const nlohmann::json& j, const std::string& name,
+                               MetricTolerance base) {
+  check_known_fields(j, name, {"direction", "relative", "absolute"});
   if (j.contains("direction")) {
-    const auto direction = j["direction"].get<std::string>();
+    const auto direction = string_field(j, name, "direction", "");
     if (direction != "lower_is_better" && direction != "higher_is_better") {
-      throw std::invalid_argument("direction must be lower_is_better or higher_is_better");
+      throw std::invalid_argument("field \"" + field_name(name, "direction") +
+                                  "\" must be lower_is_better or higher_is_better");
     }
     base.lower_is_better = direction == "lower_is_better";
   }
-  base.relative = j.value("relative", base.relative);
-  base.absolute = j.value("absolute", base.absolute);
+  base.relative =
+      non_negative(number_field(j, name, "relative", base.relative), field_name(name, "relative"));
+  base.absolute =
+      non_negative(number_field(j, name, "absolute", base.absolute), field_name(name, "absolute"));
   return base;
 }
 
-ExternalMethodSpec external_method_from(const nlohmann::json& j) {
-  const auto name = j.at("name").get<std::string>();
+ExternalMethodSpec external_method_from(const nlohmann::json& j, const std::string& name_of_entry) {
+  check_known_fields(j, name_of_entry, {"name", "command", "vertex_tolerance_rel_diag"});
+  if (!j.contains("name"))
+    throw std::invalid_argument("field \"" + field_name(name_of_entry, "name") + "\" is missing");
+  const auto name = string_field(j, name_of_entry, "name", "");
   if (!j.contains("command")) {
     if (auto predefined = find_predefined_external_method(name))
       return *predefined;
@@ -78,11 +96,120 @@ ExternalMethodSpec external_method_from(const nlohmann::json& j) {
   }
   ExternalMethodSpec spec;
   spec.name = name;
-  spec.command = j["command"].get<std::string>();
-  spec.vertex_tolerance_rel_diag = j.value("vertex_tolerance_rel_diag", 0.0);
+  spec.command = string_field(j, name_of_entry, "command", "");
+  spec.vertex_tolerance_rel_diag =
+      non_negative(number_field(j, name_of_entry, "vertex_tolerance_rel_diag", 0.0),
+                   field_name(name_of_entry, "vertex_tolerance_rel_diag"));
   check_external_method_name(spec.name);
   check_command_template(spec.command);
   return spec;
+}
+
+// A list the suite may not leave empty (an empty list would run nothing).
+template <typename T>
+const std::vector<T>& not_empty(const std::vector<T>& list, const char* name) {
+  if (list.empty())
+    throw std::invalid_argument("field \"" + std::string(name) + "\" is an empty list");
+  return list;
+}
+
+void read_evaluation(const nlohmann::json& e, EvaluationOptions& o) {
+  const std::string p = "evaluation";
+  check_known_fields(
+      e, p,
+      {"hausdorff_error_bound_rel_diag", "mean_error_bound_rel_diag",
+       "hole_mean_error_bound_rel_diag", "mean_relative_error_bound", "mean_query_budget",
+       "hole_mean_query_budget", "self_intersections", "arrow_field_of_view_degrees"});
+  const auto positive = [&](const char* key, double fallback) {
+    const double value = number_field(e, p, key, fallback);
+    if (!(value > 0.0))
+      throw std::invalid_argument("field \"" + field_name(p, key) + "\" must be positive");
+    return value;
+  };
+  o.hausdorff_error_bound_rel_diag =
+      positive("hausdorff_error_bound_rel_diag", o.hausdorff_error_bound_rel_diag);
+  o.mean_error_bound_rel_diag = positive("mean_error_bound_rel_diag", o.mean_error_bound_rel_diag);
+  o.hole_mean_error_bound_rel_diag =
+      positive("hole_mean_error_bound_rel_diag", o.hole_mean_error_bound_rel_diag);
+  o.mean_relative_error_bound = positive("mean_relative_error_bound", o.mean_relative_error_bound);
+  o.mean_query_budget = static_cast<decltype(o.mean_query_budget)>(integer_field(
+      e, p, "mean_query_budget", static_cast<std::int64_t>(o.mean_query_budget), 1, 1LL << 40));
+  o.hole_mean_query_budget = static_cast<decltype(o.hole_mean_query_budget)>(
+      integer_field(e, p, "hole_mean_query_budget",
+                    static_cast<std::int64_t>(o.hole_mean_query_budget), 1, 1LL << 40));
+  o.self_intersections = bool_field(e, p, "self_intersections", o.self_intersections);
+  o.arrow_field_of_view_degrees =
+      positive("arrow_field_of_view_degrees", o.arrow_field_of_view_degrees);
+}
+
+void read_tolerances(const nlohmann::json& t, Tolerances& tolerances) {
+  check_known_fields(t, "tolerances", {"default", "metrics", "ignored"});
+  if (t.contains("default"))
+    tolerances.default_tolerance = tolerance_from(t["default"], "tolerances.default", {});
+  if (t.contains("metrics")) {
+    if (!t["metrics"].is_object()) {
+      throw std::invalid_argument("field \"tolerances.metrics\": expected an object, got " +
+                                  quote_json(t["metrics"]));
+    }
+    for (const auto& [name, value] : t["metrics"].items()) {
+      tolerances.metrics[name] =
+          tolerance_from(value, "tolerances.metrics." + name, tolerances.default_tolerance);
+    }
+  }
+  tolerances.ignored = string_list_field(t, "tolerances", "ignored", tolerances.ignored);
+}
+
+std::uint64_t memory_limit_from(const nlohmann::json& j) {
+  const auto it = j.find("memory_limit");
+  if (it == j.end())
+    return kDefaultMemoryLimitBytes;
+  if (it->is_string()) {
+    try {
+      return parse_memory_size(it->get<std::string>());
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("field \"memory_limit\": ") + e.what());
+    }
+  }
+  return as_unsigned(*it, "memory_limit");  // bytes
+}
+
+Suite suite_from_json(const nlohmann::json& j, const std::filesystem::path& path) {
+  check_known_fields(j, "",
+                     {"name", "description", "cases", "methods", "external_methods", "users",
+                      "noise_percent", "seeds", "include_cad", "timeout_s", "memory_limit",
+                      "method_repetitions", "evaluation", "tolerances"});
+  Suite suite;
+  suite.name = string_field(j, "", "name", path.stem().string());
+  suite.description = string_field(j, "", "description", "");
+  if (!j.contains("cases"))
+    throw std::invalid_argument("field \"cases\" is missing");
+  suite.case_patterns = not_empty(string_list_field(j, "", "cases", {}), "cases");
+  suite.methods = string_list_field(j, "", "methods", {});  // empty: every built-in method
+  if (j.contains("external_methods")) {
+    if (!j["external_methods"].is_array())
+      throw std::invalid_argument("field \"external_methods\": expected a list");
+    for (std::size_t i = 0; i < j["external_methods"].size(); ++i) {
+      suite.external_methods.push_back(external_method_from(
+          j["external_methods"][i], "external_methods[" + std::to_string(i) + "]"));
+    }
+  }
+  suite.users = not_empty(string_list_field(j, "", "users", suite.users), "users");
+  suite.noise_levels =
+      not_empty(number_list_field(j, "", "noise_percent", suite.noise_levels), "noise_percent");
+  for (std::size_t i = 0; i < suite.noise_levels.size(); ++i)
+    non_negative(suite.noise_levels[i], "noise_percent[" + std::to_string(i) + "]");
+  suite.seeds = not_empty(unsigned_list_field(j, "", "seeds", suite.seeds), "seeds");
+  suite.include_cad = bool_field(j, "", "include_cad", suite.include_cad);
+  suite.timeout_seconds =
+      non_negative(number_field(j, "", "timeout_s", suite.timeout_seconds), "timeout_s");
+  suite.memory_limit_bytes = memory_limit_from(j);
+  suite.method_repetitions = static_cast<int>(
+      integer_field(j, "", "method_repetitions", suite.method_repetitions, 1, 1000));
+  if (j.contains("evaluation"))
+    read_evaluation(j["evaluation"], suite.evaluation);
+  if (j.contains("tolerances"))
+    read_tolerances(j["tolerances"], suite.tolerances);
+  return suite;
 }
 
 }  // namespace
@@ -100,54 +227,7 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& s
                             " cannot be read); known suites: " + (known.empty() ? "none" : known));
   }
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    Suite suite;
-    suite.name = j.value("name", path.stem().string());
-    suite.description = j.value("description", "");
-    suite.case_patterns = j.at("cases").get<std::vector<std::string>>();
-    suite.methods = j.value("methods", std::vector<std::string>{});
-    for (const auto& entry : j.value("external_methods", nlohmann::json::array()))
-      suite.external_methods.push_back(external_method_from(entry));
-    suite.users = j.value("users", suite.users);
-    suite.noise_levels = j.value("noise_percent", suite.noise_levels);
-    suite.seeds = j.value("seeds", suite.seeds);
-    suite.include_cad = j.value("include_cad", suite.include_cad);
-    suite.timeout_seconds = j.value("timeout_s", suite.timeout_seconds);
-    suite.method_repetitions = j.value("method_repetitions", suite.method_repetitions);
-    if (suite.method_repetitions < 1)
-      throw std::invalid_argument("method_repetitions must be at least 1");
-    if (j.contains("evaluation")) {
-      const auto& e = j["evaluation"];
-      auto& o = suite.evaluation;
-      o.hausdorff_error_bound_rel_diag =
-          e.value("hausdorff_error_bound_rel_diag", o.hausdorff_error_bound_rel_diag);
-      o.mean_error_bound_rel_diag =
-          e.value("mean_error_bound_rel_diag", o.mean_error_bound_rel_diag);
-      o.hole_mean_error_bound_rel_diag =
-          e.value("hole_mean_error_bound_rel_diag", o.hole_mean_error_bound_rel_diag);
-      o.mean_relative_error_bound =
-          e.value("mean_relative_error_bound", o.mean_relative_error_bound);
-      o.mean_query_budget = e.value("mean_query_budget", o.mean_query_budget);
-      o.hole_mean_query_budget = e.value("hole_mean_query_budget", o.hole_mean_query_budget);
-      o.self_intersections = e.value("self_intersections", o.self_intersections);
-      o.arrow_field_of_view_degrees =
-          e.value("arrow_field_of_view_degrees", o.arrow_field_of_view_degrees);
-    }
-    if (j.contains("tolerances")) {
-      const auto& t = j["tolerances"];
-      if (t.contains("default"))
-        suite.tolerances.default_tolerance = tolerance_from(t["default"], {});
-      if (t.contains("metrics")) {
-        for (const auto& [name, value] : t["metrics"].items()) {
-          suite.tolerances.metrics[name] =
-              tolerance_from(value, suite.tolerances.default_tolerance);
-        }
-      }
-      suite.tolerances.ignored = t.value("ignored", suite.tolerances.ignored);
-    }
-    if (suite.case_patterns.empty())
-      throw std::invalid_argument("\"cases\" is empty");
-    return suite;
+    return suite_from_json(nlohmann::json::parse(in), path);
   } catch (const std::exception& e) {
     throw InvalidInputError(path.string() + ": " + e.what());
   }

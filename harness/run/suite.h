@@ -4,6 +4,7 @@
 #pragma once
 
 #include "generators/case_catalog.h"
+#include "harness/run/memory_limit.h"
 #include "methods/external/external_method_spec.h"
 #include "metrics/evaluation.h"
 
@@ -60,7 +61,10 @@ struct Suite {
   std::vector<std::uint64_t> seeds{0};
   bool include_cad = true;
   double timeout_seconds = 300.0;  ///< per job
-  int method_repetitions = 1;      ///< runs of the method per job; its time is their median
+  /// "memory_limit": each job's address space ("4G", "512MiB", bytes; "0": none); default
+  /// 4 GiB (harness/run/memory_limit.h).
+  std::uint64_t memory_limit_bytes = kDefaultMemoryLimitBytes;
+  int method_repetitions = 1;  ///< runs of the method per job; its time is their median
   EvaluationOptions evaluation;
   Tolerances tolerances;
 };
@@ -70,7 +74,10 @@ struct Suite {
 std::filesystem::path default_suites_dir();
 
 /// Reads suite `name_or_path`: a path to a .json file, or a name looked up as
-/// <suites_dir>/<name>.json. Throws InvalidInputError with the file and the field on error.
+/// <suites_dir>/<name>.json. Throws InvalidInputError with the file and the field on error:
+/// a field of the wrong type, an unknown field (a typo would silently change the run), an
+/// empty list of cases, users, noise levels or seeds, a negative noise level, timeout or
+/// tolerance.
 Suite load_suite(const std::string& name_or_path,
                  const std::filesystem::path& suites_dir = default_suites_dir());
 

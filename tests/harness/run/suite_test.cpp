@@ -1,4 +1,5 @@
 #include "harness/run/suite.h"
+#include "harness/run/run_command.h"
 
 #include "core/errors.h"
 
@@ -82,6 +83,63 @@ TEST(Suite, BadSuitesAreClearErrors) {
   expect_refused(path, "{\"cases\": [\"box/*\"], \"method_repetitions\": 0}", "method_repetitions");
   std::ofstream(path) << "{\"cases\": [\"box/*\"], \"method_repetitions\": 5}";
   EXPECT_EQ(load_suite(path.string()).method_repetitions, 5);
+}
+
+// Hostile suites: each is one line naming the file and the field.
+TEST(Suite, HostileSuitesNameTheFileAndTheField) {
+  const auto path = std::filesystem::temp_directory_path() / "holebench_hostile_suite.json";
+  const auto refused = [&](const std::string& text, const std::string& field) {
+    SCOPED_TRACE(text);
+    std::ofstream(path) << text;
+    try {
+      load_suite(path.string());
+      ADD_FAILURE() << "accepted";
+    } catch (const InvalidInputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path.string()), std::string::npos) << what;
+      EXPECT_NE(what.find(field), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  };
+  // An unknown key (a typo would silently run something else), at each level.
+  refused(R"({"cases": ["box/*"], "noise": [5]})", "unknown field \"noise\"");
+  refused(R"({"cases": ["box/*"], "evaluation": {"hausdorff_bound": 1}})",
+          "evaluation.hausdorff_bound");
+  refused(R"({"cases": ["box/*"], "tolerances": {"default": {"relativ": 1}}})",
+          "tolerances.default.relativ");
+  // Empty lists: nothing would run.
+  refused(R"({"cases": []})", "\"cases\" is an empty list");
+  refused(R"({"cases": ["box/*"], "users": []})", "\"users\" is an empty list");
+  refused(R"({"cases": ["box/*"], "noise_percent": []})", "\"noise_percent\" is an empty list");
+  refused(R"({"cases": ["box/*"], "seeds": []})", "\"seeds\" is an empty list");
+  refused(R"({"methods": ["liepa_cgal"]})", "\"cases\" is missing");
+  // Negative and out-of-range numbers.
+  refused(R"({"cases": ["box/*"], "noise_percent": [0, -5]})", "noise_percent[1]");
+  refused(R"({"cases": ["box/*"], "timeout_s": -1})", "timeout_s");
+  refused(R"({"cases": ["box/*"], "seeds": [-1]})", "seeds[0]");
+  refused(R"({"cases": ["box/*"], "seeds": [1e30]})", "seeds[0]");
+  refused(R"({"cases": ["box/*"], "tolerances": {"metrics": {"x": {"relative": -0.1}}}})",
+          "tolerances.metrics.x.relative");
+  refused(R"({"cases": ["box/*"], "evaluation": {"mean_query_budget": 0}})",
+          "evaluation.mean_query_budget");
+  refused(R"({"cases": ["box/*"], "memory_limit": "lots"})", "memory_limit");
+  // Wrong types.
+  refused(R"({"cases": "box/*"})", "\"cases\": expected a list");
+  refused(R"({"cases": ["box/*"], "noise_percent": ["5"]})", "noise_percent[0]");
+  refused(R"({"cases": ["box/*"], "include_cad": "no"})", "include_cad");
+  refused(R"({"cases": ["box/*"], "external_methods": [{"command": "x {input} {output}"}]})",
+          "external_methods[0].name");
+  refused(R"({"cases": ["box/*"], "noise_percent": [NaN]})", "line 1");
+}
+
+TEST(Suite, TheMemoryLimitIsReadWithItsUnitAndDefaultsToFourGibibytes) {
+  EXPECT_EQ(load_suite("smoke").memory_limit_bytes, 4 * kGibibyte);
+  const auto path = std::filesystem::temp_directory_path() / "holebench_memory_suite.json";
+  std::ofstream(path) << R"({"cases": ["box/*"], "memory_limit": "512M"})";
+  EXPECT_EQ(load_suite(path.string()).memory_limit_bytes, 512ull << 20);
+  std::ofstream(path) << R"({"cases": ["box/*"], "memory_limit": 0})";
+  EXPECT_EQ(load_suite(path.string()).memory_limit_bytes, 0u);
+  EXPECT_EQ(run_options_from_suite(load_suite("smoke")).runner.memory_limit_bytes, 4 * kGibibyte);
 }
 
 }  // namespace
