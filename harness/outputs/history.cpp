@@ -1,5 +1,7 @@
 #include "harness/outputs/history.h"
 
+#include "core/atomic_file.h"
+
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/report/leaderboard.h"
 #include "harness/outputs/report/summary_table.h"
@@ -292,10 +294,7 @@ std::string history_html(const History& history) {
 std::filesystem::path write_history(const History& history, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   const auto path = out_dir / "history.html";
-  std::ofstream out(path, std::ios::binary);
-  out << history_html(history);
-  if (!out)
-    throw std::runtime_error(path.string() + ": cannot write");
+  write_file_atomically(path, history_html(history));  // never half a page
   return path;
 }
 

@@ -237,15 +237,23 @@ TEST(CreaseHoles, CrossOneTwoAndThreeCreases) {
   }
 }
 
+// The feature points the method detects (3.4.1, automatic rule) on the one hole of `c`.
+HoleFeatures detected_features(const Case& c, const FeaturePointOptions& options = {}) {
+  const auto holes = identify_holes(c.input);
+  EXPECT_EQ(holes.size(), 1u);
+  return holes.empty()
+             ? HoleFeatures{}
+             : detect_feature_points(c.input, holes[0], detect_crest_lines(c.input), options);
+}
+
 // A hole across one crease gets one feature line (automatic rule, no user) and the crease
 // is restored: the missing sharp edge is present in the repaired mesh (metrics'
 // missing_edge_present_fraction, tolerance 5e-3 of the diagonal).
 TEST(CrestFeature, OneCreaseHoleGetsOneFeatureLineAndTheCreaseIsRestored) {
   const Case c = generators::make_case("crease/fandisk/1");
-  const CrestLines crest = detect_crest_lines(c.input);
   const auto holes = identify_holes(c.input);
   ASSERT_EQ(holes.size(), 1u);
-  const HoleFeatures features = detect_feature_points(c.input, holes[0], crest);
+  const HoleFeatures features = detected_features(c);
   EXPECT_EQ(features.points.size(), 2u);
   EXPECT_EQ(features.pairs.size(), 1u);
   EXPECT_FALSE(features.corner);
@@ -264,15 +272,12 @@ TEST(CrestFeature, OneCreaseHoleGetsOneFeatureLineAndTheCreaseIsRestored) {
 // feature line. Now both are found, paired, and the crease is restored without a user.
 TEST(CrestFeature, CreaseEndsOnASmallHoleAreTwoFeaturePoints) {
   const Case c = generators::make_case("solid/cylinder/edge_convex/small");
-  const CrestLines crest = detect_crest_lines(c.input);
-  const auto holes = identify_holes(c.input);
-  ASSERT_EQ(holes.size(), 1u);
-  const HoleFeatures features = detect_feature_points(c.input, holes[0], crest);
+  const HoleFeatures features = detected_features(c);
   EXPECT_EQ(features.points.size(), 2u);
   EXPECT_EQ(features.pairs.size(), 1u);
   FeaturePointOptions merged;
   merged.merge_edges = 2.5;
-  EXPECT_EQ(detect_feature_points(c.input, holes[0], crest, merged).points.size(), 1u);
+  EXPECT_EQ(detected_features(c, merged).points.size(), 1u);
   const MethodRun r = run_method("solid/cylinder/edge_convex/small", false);
   EXPECT_EQ(metric(r.evaluation, "missing_edge_present_fraction"), 1.0);
 }

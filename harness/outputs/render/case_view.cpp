@@ -84,6 +84,17 @@ Overlay hole_overlay(const Mesh& holed, double normal_length) {
   return overlay;
 }
 
+void add_guidance_arrows(Overlay& overlay, const Case& c, const MethodResult& result) {
+  const double diagonal = bounding_box(c.complete).diagonal();
+  for (const auto& hole : result.holes) {
+    if (!hole.arrow)
+      continue;
+    const double length =
+        std::max(0.05 * diagonal, 0.8 * (hole.centroid - hole.arrow->position).norm());
+    add_arrow(overlay, *hole.arrow, length);
+  }
+}
+
 void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length) {
   const Rgb blue{0.05f, 0.15f, 0.75f};
   const Point r = arrow.direction / arrow.direction.norm();
@@ -104,15 +115,7 @@ Image job_snapshot(const Case& c, const MethodResult& result, const SnapshotOpti
   }
   camera.distance = 1.05 * radius / std::sin(half_angle);
   Overlay overlay;
-  const double diagonal = bounding_box(c.complete).diagonal();
-  for (const auto& hole : result.holes) {
-    if (!hole.arrow)
-      continue;
-    // Point the arrow's shaft from P most of the way to the hole.
-    const double length =
-        std::max(0.05 * diagonal, 0.8 * (hole.centroid - hole.arrow->position).norm());
-    add_arrow(overlay, *hole.arrow, length);
-  }
+  add_guidance_arrows(overlay, c, result);
   return render_snapshot(result.repaired, camera, options, overlay);
 }
 

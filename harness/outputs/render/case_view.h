@@ -22,6 +22,9 @@ Overlay hole_overlay(const Mesh& holed, double normal_length);
 /// from P along r of `length` with a cone at its tip (render/snapshot.h's arrow_solid), and
 /// P marked by a dot.
 void add_arrow(Overlay& overlay, const GuidanceArrow& arrow, double length);
+/// Every hole's guidance arrow in `result`, its shaft pointing from P most of the way to the
+/// hole (at least 5 % of the complete model's diagonal long).
+void add_guidance_arrows(Overlay& overlay, const Case& c, const MethodResult& result);
 
 /// The snapshot of a job: the repaired mesh from the case's hole view, with every guidance
 /// arrow of the method drawn in.

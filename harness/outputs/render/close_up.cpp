@@ -120,18 +120,11 @@ Rgb shaded_grey() {
   return {0.62f, 0.62f, 0.62f};
 }
 
-/// Arrows as now (case_view.h's add_arrow, the shaft pointing most of the way to the hole)
+/// Arrows as now (case_view.h's add_guidance_arrows)
 /// and the open boundary loops of the repaired mesh.
 Overlay job_overlay(const Case& c, const MethodResult& result) {
   Overlay overlay;
-  const double diagonal = bounding_box(c.complete).diagonal();
-  for (const auto& hole : result.holes) {
-    if (!hole.arrow)
-      continue;
-    const double length =
-        std::max(0.05 * diagonal, 0.8 * (hole.centroid - hole.arrow->position).norm());
-    add_arrow(overlay, *hole.arrow, length);
-  }
+  add_guidance_arrows(overlay, c, result);
   for (const auto& loop : find_boundary_loops(result.repaired)) {
     for (auto h : loop.halfedges) {
       overlay.lines.push_back({result.repaired.point(result.repaired.from_vertex_handle(h)),

@@ -1,5 +1,7 @@
 #include "harness/outputs/report/report.h"
 
+#include "core/atomic_file.h"
+
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/report/leaderboard.h"
 
@@ -39,11 +41,9 @@ const std::vector<std::pair<std::string, std::string>>& plot_files() {
   return files;
 }
 
+// Atomically: a report killed while writing leaves the previous file, never half of one.
 void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out)
-    throw std::runtime_error(path.string() + ": cannot write");
+  write_file_atomically(path, text);
 }
 
 std::string case_kind_of(const JobRecord& record) {
