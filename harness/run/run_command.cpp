@@ -140,8 +140,15 @@ RunSummary run_jobs(const RunOptions& options) {
         ++summary.failures;
     }
   } else {
-    RunnerResult result =
-        run_isolated(jobs, run_one, options.out_dir / "records.jsonl", options.runner);
+    RunnerOptions runner = options.runner;
+    std::map<std::string, std::pair<std::string, std::string>> family_kind;
+    for (const auto& d : catalog.cases())
+      family_kind[d.id] = {d.family, d.kind};
+    runner.case_family_kind = [&family_kind](const std::string& id) {
+      const auto it = family_kind.find(id);
+      return it != family_kind.end() ? it->second : std::pair<std::string, std::string>();
+    };
+    RunnerResult result = run_isolated(jobs, run_one, options.out_dir / "records.jsonl", runner);
     summary.records = std::move(result.records);
     summary.failures = result.failures;
   }

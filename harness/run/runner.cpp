@@ -18,6 +18,7 @@
 #include <set>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 namespace holebench::harness {
 
@@ -311,6 +312,8 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
       std::filesystem::remove_all(child.temporary_dir, ignored);
       const Job& job = jobs[child.job_index];
       JobRecord record = finish_child(child, job, status);
+      if (record.case_family.empty() && options.case_family_kind)
+        std::tie(record.case_family, record.case_kind) = options.case_family_kind(job.case_id);
       append_record(fd, record_to_json_line(record) + "\n", records_path);
       failures += record.status != JobStatus::Ok ? 1 : 0;
       ++finished;

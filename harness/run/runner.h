@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace holebench::harness {
@@ -37,6 +38,10 @@ struct RunnerOptions {
   std::uint64_t memory_limit_bytes = kDefaultMemoryLimitBytes;
   bool resume = false;   ///< keep the records already in records.jsonl
   bool progress = true;  ///< progress on stderr: done/total, rate, ETA, failures
+  /// The family and kind of a case by its id, for the records the runner writes itself (a
+  /// job that timed out or crashed sends none), so that reports group them with their case.
+  /// Unset: they stay empty.
+  std::function<std::pair<std::string, std::string>(const std::string& case_id)> case_family_kind;
 };
 
 struct RunnerResult {

@@ -60,6 +60,25 @@ TEST(Runner, CrashesHangsAndEscapesBecomeStatusesAndTheRunGoesOn) {
   EXPECT_EQ(read_records_jsonl(path).size(), 5u);  // every record was appended as it finished
 }
 
+// A job that sends no record (a crash, a timeout) still names its case's family and kind, so
+// that reports count it with its case and not in a group without a name.
+TEST(Runner, RecordsOfCrashesAndTimeoutsNameTheCaseFamily) {
+  RunnerOptions options;
+  options.workers = 2;
+  options.timeout_seconds = 1.0;
+  options.progress = false;
+  options.case_family_kind = [](const std::string& id) {
+    return std::pair<std::string, std::string>("family of " + id, "kind of " + id);
+  };
+  const auto result =
+      run_isolated(jobs_named({"crash", "hang"}), fake_job, fresh_file("families.jsonl"), options);
+  ASSERT_EQ(result.records.size(), 2u);
+  EXPECT_EQ(result.records[0].status, JobStatus::Crash);
+  EXPECT_EQ(result.records[0].case_family, "family of crash");
+  EXPECT_EQ(result.records[1].status, JobStatus::Timeout);
+  EXPECT_EQ(result.records[1].case_kind, "kind of hang");
+}
+
 TEST(Runner, SameRecordsWhateverTheNumberOfWorkers) {
   const auto jobs = jobs_named({"a", "bb", "ccc", "dddd", "eeeee", "ffffff"});
   RunnerOptions options;
