@@ -59,16 +59,28 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     user_seconds += seconds_since(start);
 
     start = Clock::now();
-    const FeatureLines lines =
-        interpolate_feature_lines(hole, features, options.interpolation, &crest);
+    FeatureLines lines = interpolate_feature_lines(hole, features, options.interpolation, &crest);
     interpolation_seconds += seconds_since(start);
 
     start = Clock::now();
-    const HolePartition partition = partition_hole(hole, lines);
+    HolePartition partition = partition_hole(hole, lines);
     partition_seconds += seconds_since(start);
 
     start = Clock::now();
-    const HoleFillingResult filling = fill_hole(result.repaired, partition, options.filling);
+    HoleFillingResult filling = fill_hole(result.repaired, partition, options.filling);
+    // Where the user's corner graph (not in the paper) gives sub-holes that cannot be
+    // filled or stitched, the hole again with the paper's features alone (pairs and the
+    // corner triple), before any stand-in. A failed fill leaves the mesh as it was.
+    std::string graph_left_out;
+    if (!filling.closed && (!features.more_corners.empty() || !features.corner_links.empty())) {
+      HoleFeatures paper_features = features;
+      paper_features.more_corners.clear();
+      paper_features.corner_links.clear();
+      lines = interpolate_feature_lines(hole, paper_features, options.interpolation, &crest);
+      partition = partition_hole(hole, lines);
+      graph_left_out = "; corner graph left out (" + filling.error + ")";
+      filling = fill_hole(result.repaired, partition, options.filling);
+    }
     filling_seconds += seconds_since(start);
 
     report.closed = filling.closed;
@@ -116,6 +128,7 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
       report.note += fmt::format("; chords split {}", filling.split_chords);
     if (!hole.islands.empty())
       report.note += fmt::format("; islands {}", hole.islands.size());
+    report.note += graph_left_out;
     for (const auto& d : partition.dropped)
       report.note += "; dropped: " + d;
     report.note += fallback;

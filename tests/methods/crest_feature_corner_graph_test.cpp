@@ -131,5 +131,24 @@ TEST(CrestFeatureCornerGraph, OracleRestoresTwoLinkedCornersOnTheFandisk) {
             metric(evaluate(c, paper), "hole_hausdorff_rel_diag"));
 }
 
+// Where the corner graph's sub-holes cannot be stitched (a turbine corner hole, measured:
+// "a patch triangle could not be stitched (non-manifold)"), the hole is filled again with
+// the paper's features alone, before any stand-in: the hole is closed by the method and
+// its record names no fallback.
+TEST(CrestFeatureCornerGraph, GraphThatCannotBeStitchedIsLeftOutBeforeAnyStandIn) {
+  const Case c = generators::make_case("cad/turbine/corner_ccrr/small");
+  harness::OracleUser oracle(c);
+  const MethodResult result = CrestFeatureMethod().run(c.input, {}, oracle);
+  bool left_out = false;
+  for (const auto& hole : result.holes) {
+    EXPECT_TRUE(hole.closed) << hole.note;
+    if (hole.note.find("corner graph left out") != std::string::npos) {
+      left_out = true;
+      EXPECT_EQ(hole.fallback, "") << hole.note;
+    }
+  }
+  EXPECT_TRUE(left_out);
+}
+
 }  // namespace
 }  // namespace holebench
