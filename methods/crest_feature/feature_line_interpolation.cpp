@@ -145,8 +145,6 @@ FeatureLines interpolate_feature_lines(const Hole& hole, const HoleFeatures& fea
       result.lines.push_back(std::move(line));
     }
   }
-  if (features.corner)
-    result.corner = result.corners.front();
   // Corner links (the user's corner graph): straight lines between two corners.
   for (const auto& link : features.corner_links) {
     const Point a = result.corners[link[0]], b = result.corners[link[1]];

@@ -35,8 +35,8 @@ struct FeatureLine {
 struct FeatureLines {
   /// Pairs first, then each corner's lines (the triple's first), then the corner links.
   std::vector<FeatureLine> lines;
-  std::optional<Point> corner;  ///< where a corner triple's lines meet (corners[0])
-  std::vector<Point> corners;   ///< every corner: the triple's, then the user's further ones
+  /// Where each corner's lines meet: the triple's first, then the user's further ones.
+  std::vector<Point> corners;
 };
 
 /// Where P0 and P3 of equation 3 come from: the crest line continued to distance d outside
