@@ -1,5 +1,7 @@
 #include "core/geometry.h"
 
+#include "core/portable_math.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -62,7 +64,7 @@ double signed_dihedral_angle(const Mesh& mesh, EdgeHandle e) {
   // other (convex) or towards each other (reflex) about the edge h0 runs along.
   const double sine = OpenMesh::dot(OpenMesh::cross(n0, n1), axis) / axis_length;
   const double cosine = std::clamp(OpenMesh::dot(n0, n1), -1.0, 1.0);
-  return std::atan2(sine, cosine);
+  return portable_atan2(sine, cosine);
 }
 
 }  // namespace holebench

@@ -1,6 +1,7 @@
 #include "core/planar_segmentation.h"
 
 #include "core/geometry.h"
+#include "core/portable_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,7 @@ PlanarSegmentation segment_planar_regions(const Mesh& mesh,
   result.distance_tolerance =
       std::max(options.residual_factor * median,
                options.min_tolerance_rel_diag * bounding_box_diagonal(mesh));
-  const double cos_angle = std::cos(options.max_normal_angle_degrees * M_PI / 180.0);
+  const double cos_angle = portable_cos(options.max_normal_angle_degrees * M_PI / 180.0);
 
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
