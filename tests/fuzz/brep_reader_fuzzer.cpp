@@ -20,10 +20,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto path =
       holebench::fuzz::write_input(data, size, std::string("input") + HOLEBENCH_FUZZ_EXTENSION);
   try {
-    if (isolated)
-      holebench::occt::read_brep_mesh(path);
-    else
+    if (isolated) {
+      // Below the replay's own timeout (scripts/run_fuzz.sh), so that a file OpenCASCADE
+      // loops on is the reader's error, not a timeout of the fuzzer.
+      holebench::occt::TessellationOptions options;
+      options.time_limit_seconds = 20.0;
+      holebench::occt::read_brep_mesh(path, options);
+    } else {
       holebench::occt::tessellate_shape_soup(holebench::occt::read_brep_shape(path), {});
+    }
   } catch (const holebench::InvalidInputError&) {
   }
   return 0;
