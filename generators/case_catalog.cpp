@@ -55,6 +55,7 @@ struct CaseCatalog::State {
     options.radius_rel_diag = size.radius_rel_diag;
     options.structure_size_rel_diag = kStructureSizeRelDiag;
     options.shape_seed = stable_hash(id);
+    options.keep_input_regions = model.regions_are_brep_faces;
     Case c = make_punched_case(model, target, options);
     c.id = id;
     c.family = family;

@@ -18,6 +18,10 @@ struct AnalysedModel {
   FeatureAnalysis features;
   double diagonal = 0.0;
   std::vector<char> region_is_planar;  ///< per region: plane fit residual below 1e-6 diag
+  /// The regions are the faces of a B-Rep model (a STEP, IGES or BREP file), not a
+  /// segmentation: holes punched into it keep them in the input, as the B-Rep paper's
+  /// input carries its faces.
+  bool regions_are_brep_faces = false;
 };
 
 /// Segments `mesh`, assigns its region ids and analyses its features.

@@ -15,7 +15,9 @@ struct PunchedCaseOptions {
   double island_ratio = 0.45;             ///< island: inner radius / outer radius
   double structure_size_rel_diag = 0.04;  ///< delta_s for the expected decision
   std::uint64_t shape_seed = 0;           ///< phases of the irregular boundary
-  bool keep_input_regions = false;        ///< false: the input has no region ids (a real scan)
+  /// false: the input has no region ids (a scan); true: it keeps the model's regions (the
+  /// faces of a B-Rep file: the B-Rep paper's input).
+  bool keep_input_regions = false;
 };
 
 /// Removes the faces around `target` (an irregular disc on the surface, grown only through

@@ -442,6 +442,9 @@ int main(int argc, char** argv) {
       fmt::print("methods:\n");
       for (const auto& m : holebench::make_all_methods())
         fmt::print("  {:<16} {}\n", m->id(), m->description());
+      fmt::print("variants run by name only (--method ID):\n");
+      for (const auto& m : holebench::make_methods_run_by_name())
+        fmt::print("  {:<16} {}\n", m->id(), m->description());
       fmt::print("external methods holebench predefines (run by name: --method NAME):\n");
       for (const auto& spec : holebench::predefined_external_methods())
         fmt::print("  {:<16} {}\n", spec.name, spec.command);

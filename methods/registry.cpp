@@ -23,10 +23,18 @@ std::vector<std::unique_ptr<Method>> make_all_methods() {
   return methods;
 }
 
+std::vector<std::unique_ptr<Method>> make_methods_run_by_name() {
+  std::vector<std::unique_ptr<Method>> methods;
+  methods.push_back(std::make_unique<BrepGuidanceMethod>(BrepGuidanceMethod::segmented()));
+  return methods;
+}
+
 std::unique_ptr<Method> make_method(const std::string& id) {
-  for (auto& method : make_all_methods()) {
-    if (method->id() == id)
-      return std::move(method);
+  for (auto* list : {make_all_methods, make_methods_run_by_name}) {
+    for (auto& method : list()) {
+      if (method->id() == id)
+        return std::move(method);
+    }
   }
   throw std::invalid_argument("unknown method '" + id + "' (see `holebench list`)");
 }

@@ -97,8 +97,9 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   FeatureOptions features;
   features.segmentation.sharp_angle_degrees = options.sharp_angle_degrees;
   features.regions_from_mesh = brep;
-  auto model = std::make_shared<const AnalysedModel>(
-      analyse_model(source.name, remesh_isotropic(mesh, remesh), features));
+  AnalysedModel analysed = analyse_model(source.name, remesh_isotropic(mesh, remesh), features);
+  analysed.regions_are_brep_faces = brep;
+  auto model = std::make_shared<const AnalysedModel>(std::move(analysed));
   std::lock_guard<std::mutex> lock(mutex);
   cache.emplace(key, model);
   return model;

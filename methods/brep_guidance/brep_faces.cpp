@@ -4,9 +4,10 @@
 
 namespace holebench::brep_guidance {
 
-BrepFaces extract_brep_faces(const Mesh& mesh, const PlanarSegmentationOptions& options) {
+BrepFaces extract_brep_faces(const Mesh& mesh, const PlanarSegmentationOptions& options,
+                             FaceSource source) {
   BrepFaces faces;
-  bool all_labelled = mesh.n_faces() > 0;
+  bool all_labelled = source == FaceSource::InputWhenPresent && mesh.n_faces() > 0;
   for (auto f : mesh.faces())
     all_labelled = all_labelled && region(mesh, f) != kNoRegion;
   if (!all_labelled) {

@@ -28,7 +28,7 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
   const double d = options.arrow_distance_rel_diag * diagonal;
 
   auto start = Clock::now();
-  const BrepFaces faces = extract_brep_faces(holed, options.segmentation);
+  const BrepFaces faces = extract_brep_faces(holed, options.segmentation, options.faces);
   result.phases.push_back(
       {faces.from_input ? "faces (input regions)" : "faces (planar segmentation)",
        seconds_since(start)});

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/planar_segmentation.h"
+#include "methods/brep_guidance/brep_faces.h"
 #include "methods/brep_guidance/hole_classification.h"
 #include "methods/method.h"
 
@@ -23,7 +24,10 @@ struct BrepGuidanceOptions {
   double dependence_tolerance = 1e-3;
   /// How figure 3 reads the convexity at a transition (hole_classification.h).
   brep_guidance::Figure3Rule figure_3_rule = brep_guidance::Figure3Rule::TransitionHalfEdges;
-  /// Segmentation used when the input has no region ids.
+  /// Where the faces come from: the input's B-Rep face ids where it carries them (the
+  /// paper's input), or always a segmentation (method id brep_guidance_segmented).
+  brep_guidance::FaceSource faces = brep_guidance::FaceSource::InputWhenPresent;
+  /// Segmentation used when the input has no region ids (or `faces` asks for it).
   PlanarSegmentationOptions segmentation;
 };
 
@@ -35,8 +39,21 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
 class BrepGuidanceMethod final : public Method {
  public:
   explicit BrepGuidanceMethod(BrepGuidanceOptions options = {}) : options_(options) {}
-  std::string id() const override { return "brep_guidance"; }
+  /// The variant that segments the input even where it carries B-Rep face ids, to measure
+  /// what the segmentation costs against the exact faces.
+  static BrepGuidanceOptions segmented() {
+    BrepGuidanceOptions options;
+    options.faces = brep_guidance::FaceSource::Segmentation;
+    return options;
+  }
+  std::string id() const override {
+    return options_.faces == brep_guidance::FaceSource::Segmentation ? "brep_guidance_segmented"
+                                                                     : "brep_guidance";
+  }
   std::string description() const override {
+    if (options_.faces == brep_guidance::FaceSource::Segmentation)
+      return "brep_guidance with faces always from planar segmentation, even where the input "
+             "carries B-Rep face ids";
     return "B-Rep paper: hole classification, exact closing of small inner holes (k <= 3), "
            "guidance arrows for the rest";
   }

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <map>
 #include <set>
@@ -59,6 +60,36 @@ TEST(BrepFileCases, StepPartsArePunchedAndBadStepFilesSkipped) {
   ASSERT_EQ(a.input.n_vertices(), b.input.n_vertices());
   for (auto v : a.input.vertices())
     EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
+}
+
+// The input of a hole punched into a B-Rep file keeps the B-Rep's face ids (the B-Rep
+// paper's input): every triangle has the face id of the complete model's triangle at the
+// same place, and the ids are the B-Rep's faces (the block has 12), not a segmentation.
+TEST(BrepFileCases, InputsPunchedIntoBrepFilesCarryTheFaceIds) {
+  const auto dir = occt::test::fresh_temp_dir("brep_file_face_ids");
+  occt::test::write_step(occt::test::block_with_pocket_and_hole(), dir / "block.step");
+  const CaseCatalog catalog(user_files_only(dir));
+  const Case c = catalog.make("file/block/edge_convex/small");
+  std::map<std::array<double, 3>, int> complete_face_at;  // face centroid -> face id
+  auto centroid_of = [](const Mesh& mesh, FaceHandle f) {
+    Point sum(0, 0, 0);
+    for (auto v : mesh.fv_range(f))
+      sum += mesh.point(v);
+    sum /= 3.0;
+    return std::array<double, 3>{sum[0], sum[1], sum[2]};
+  };
+  std::set<int> ids;
+  for (auto f : c.complete.faces()) {
+    complete_face_at[centroid_of(c.complete, f)] = region(c.complete, f);
+    ids.insert(region(c.complete, f));
+  }
+  EXPECT_EQ(ids.size(), 12u);
+  for (auto f : c.input.faces()) {
+    ASSERT_NE(region(c.input, f), kNoRegion);
+    const auto it = complete_face_at.find(centroid_of(c.input, f));
+    ASSERT_NE(it, complete_face_at.end());
+    EXPECT_EQ(region(c.input, f), it->second);
+  }
 }
 
 // Holes punched into B-Rep parts take their labels from the B-Rep's faces: of the face,

@@ -8,6 +8,7 @@
 #include "methods/brep_guidance/hole_classification.h"
 #include "methods/brep_guidance/hole_detection.h"
 #include "methods/common/patch_intersections.h"
+#include "methods/registry.h"
 #include "metrics/embree/triangle_scene.h"
 #include "tests/methods/method_invariants.h"
 
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 namespace holebench {
 namespace {
@@ -113,6 +115,39 @@ TEST(BrepGuidance, ClassificationEqualsTheLabelsOnEverySyntheticCase) {
                 std::string(to_string(expected.expected_decision)));
     }
   }
+}
+
+// The faces: the input's B-Rep face ids where it carries them (the paper's input), and the
+// variant brep_guidance_segmented, run by name only, segments even then. On a clean planar
+// B-Rep case both read the same k and the same decision.
+TEST(BrepGuidance, TheSegmentedVariantSegmentsEvenWhereTheInputCarriesFaces) {
+  const Case c = generators::make_case("brep/k2/inner/convex/small");
+  for (auto f : c.input.faces())
+    ASSERT_NE(region(c.input, f), kNoRegion);
+  const auto segmented = make_method("brep_guidance_segmented");
+  EXPECT_EQ(segmented->id(), "brep_guidance_segmented");
+  for (const auto& method : make_all_methods())
+    EXPECT_NE(method->id(), "brep_guidance_segmented") << "run by name only";
+  NoUser user;
+  MethodParameters parameters;
+  parameters.structure_size = c.parameters.structure_size;
+  const MethodResult exact = run_on(c);
+  const MethodResult by_segmentation = segmented->run(c.input, parameters, user);
+  auto phase_names = [](const MethodResult& result) {
+    std::set<std::string> names;
+    for (const auto& phase : result.phases)
+      names.insert(phase.phase);
+    return names;
+  };
+  EXPECT_TRUE(phase_names(exact).count("faces (input regions)"));
+  EXPECT_TRUE(phase_names(by_segmentation).count("faces (planar segmentation)"));
+  ASSERT_EQ(exact.holes.size(), 1u);
+  ASSERT_EQ(by_segmentation.holes.size(), 1u);
+  ASSERT_TRUE(exact.holes[0].classification && by_segmentation.holes[0].classification);
+  EXPECT_EQ(exact.holes[0].classification->k, c.holes[0].labels->k);
+  EXPECT_EQ(by_segmentation.holes[0].classification->k, c.holes[0].labels->k);
+  EXPECT_EQ(to_string(by_segmentation.holes[0].classification->expected_decision),
+            std::string(to_string(exact.holes[0].classification->expected_decision)));
 }
 
 // Exactness (section 3.3): closing an inner k <= 3 hole below delta_s on clean input gives
