@@ -3,8 +3,8 @@
 #include "harness/cli/subcommands.h"
 #include "harness/cluster/shard.h"
 #include "harness/run/memory_limit.h"
+#include "harness/run/resolve_run_options.h"
 #include "harness/run/run_command.h"
-#include "harness/run/suite.h"
 #include "methods/external/external_method_spec.h"
 
 #include <fmt/format.h>
@@ -17,20 +17,48 @@ namespace holebench::harness::cli {
 
 namespace {
 
-struct RunCliFlags {
-  RunOptions options;  ///< the options as given (defaults where not)
-  std::string suite;
+// What CLI11 fills in; run_flags() turns it into RunFlags once parsed.
+struct RunCliValues {
+  RunFlags flags;  ///< the flags CLI11 can fill in directly
   std::vector<std::string> external_texts;
-  bool no_snapshots = false;
-  bool no_viewer_meshes = false;
-  bool no_cad = false;
-  int workers = 0;
+  std::vector<double> noise_levels;
+  std::vector<std::uint64_t> seeds;
+  std::vector<std::string> users;
+  double hausdorff_error_bound_rel_diag = EvaluationOptions{}.hausdorff_error_bound_rel_diag;
+  generators::CatalogOptions catalog;  ///< --mesh, --brep-deflection, --cad-dir
   double timeout = -1.0;
   std::string memory_limit_text;
-  bool resume = false;
   std::string shard_text;
   int method_repetitions = 0;
 };
+
+// The flags given to `run` (CLI11 counts which ones were).
+RunFlags run_flags(const CLI::App& run, const RunCliValues& values) {
+  RunFlags flags = values.flags;
+  for (const auto& text : values.external_texts)
+    flags.external_methods.push_back(parse_external_method_spec(text));
+  if (run.count("--noise"))
+    flags.noise_levels = values.noise_levels;
+  if (run.count("--seed"))
+    flags.seeds = values.seeds;
+  if (run.count("--user"))
+    flags.users = values.users;
+  if (run.count("--hausdorff-error-bound"))
+    flags.hausdorff_error_bound_rel_diag = values.hausdorff_error_bound_rel_diag;
+  flags.user_meshes = values.catalog.user_meshes;
+  flags.brep_tessellation = values.catalog.prepare.tessellation;
+  if (run.count("--cad-dir"))
+    flags.cad_data_dir = values.catalog.cad_data_dir;
+  if (values.timeout >= 0.0)
+    flags.timeout_seconds = values.timeout;
+  if (!values.memory_limit_text.empty())
+    flags.memory_limit_bytes = parse_memory_size(values.memory_limit_text);
+  if (values.method_repetitions > 0)
+    flags.method_repetitions = values.method_repetitions;
+  if (!values.shard_text.empty())
+    flags.shard = parse_shard(values.shard_text);
+  return flags;
+}
 
 void print_summary_table(const RunSummary& summary) {
   fmt::print(
@@ -53,49 +81,9 @@ void print_summary_table(const RunSummary& summary) {
              summary.results_csv.string());
 }
 
-int run(const CLI::App& run, const RunCliFlags& flags) {
-  const RunOptions& run_options = flags.options;
-  RunOptions options = run_options;
-  // A suite gives the defaults; options given on the command line override them.
-  if (!flags.suite.empty() || run_options.case_patterns.empty()) {
-    options = run_options_from_suite(load_suite(flags.suite.empty() ? "default" : flags.suite));
-    if (!run_options.case_patterns.empty())
-      options.case_patterns = run_options.case_patterns;
-    if (!run_options.method_ids.empty())
-      options.method_ids = run_options.method_ids;
-    if (run.count("--noise"))
-      options.noise_levels = run_options.noise_levels;
-    if (run.count("--seed"))
-      options.seeds = run_options.seeds;
-    if (run.count("--user"))
-      options.users = run_options.users;
-    if (run.count("--hausdorff-error-bound")) {
-      options.evaluation.hausdorff_error_bound_rel_diag =
-          run_options.evaluation.hausdorff_error_bound_rel_diag;
-    }
-    options.out_dir = run_options.out_dir;
-  }
-  options.catalog.user_meshes = run_options.catalog.user_meshes;
-  options.catalog.prepare.tessellation = run_options.catalog.prepare.tessellation;
-  if (run.count("--cad-dir"))
-    options.catalog.cad_data_dir = run_options.catalog.cad_data_dir;
-  if (flags.no_cad)
-    options.catalog.include_cad = false;
-  options.snapshots = !flags.no_snapshots;
-  options.viewer_meshes = !flags.no_viewer_meshes;
-  options.runner.workers = flags.workers;
-  if (flags.timeout >= 0.0)
-    options.runner.timeout_seconds = flags.timeout;
-  options.runner.resume = flags.resume;
-  if (!flags.memory_limit_text.empty())
-    options.runner.memory_limit_bytes = parse_memory_size(flags.memory_limit_text);
-  if (flags.method_repetitions > 0)
-    options.method_repetitions = flags.method_repetitions;
-  if (!flags.shard_text.empty())
-    options.shard = parse_shard(flags.shard_text);
-  for (const auto& text : flags.external_texts)
-    options.external_methods.push_back(parse_external_method_spec(text));
-  const auto summary = run_jobs(options);
+int run(const CLI::App& run, const RunCliValues& values) {
+  const RunFlags flags = run_flags(run, values);
+  const auto summary = run_jobs(resolve_run_options(suite_of_run_flags(flags), flags));
   print_summary_table(summary);
   return 0;
 }
@@ -103,25 +91,25 @@ int run(const CLI::App& run, const RunCliFlags& flags) {
 }  // namespace
 
 Subcommand add_run_command(CLI::App& app) {
-  auto flags = std::make_shared<RunCliFlags>();
-  auto& run_options = flags->options;
+  auto values = std::make_shared<RunCliValues>();
+  auto& flags = values->flags;
   auto* run = app.add_subcommand(
       "run",
       "Run a suite (or cases x methods x users x noise x seeds) into a folder; each job in "
       "its own process, in parallel");
-  run->add_option("--out", run_options.out_dir,
+  run->add_option("--out", flags.out_dir,
                   "Output folder (created if missing). One holebench process at a time: while a "
                   "run or merge holds it (DIR/.holebench.lock), another exits with code 2")
       ->required();
-  run->add_option("--suite", flags->suite,
+  run->add_option("--suite", flags.suite,
                   "Suite name (suites/<name>.json: smoke, default, nightly, paper) or path; the "
                   "options below, where given, override it");
-  run->add_option("--case", run_options.case_patterns,
+  run->add_option("--case", flags.case_patterns,
                   "Case id or pattern, repeatable (default: the default suite's)");
-  run->add_option("--method", run_options.method_ids,
+  run->add_option("--method", flags.method_ids,
                   "Method id, repeatable (default: every built-in method): a built-in, a "
                   "predefined external method (meshlab_close_holes) or an --external name");
-  run->add_option("--external", flags->external_texts,
+  run->add_option("--external", values->external_texts,
                   "A program as a method, repeatable: 'name=NAME;command=COMMAND', COMMAND "
                   "reading {input} (the holed mesh, binary PLY) and writing {output} (the "
                   "repaired mesh, PLY; the input's faces unchanged, new faces are the patch), "
@@ -131,44 +119,44 @@ Subcommand add_run_command(CLI::App& app) {
                   "single-precision output (docs/methods.md)")
       ->type_name("'name=NAME;command=COMMAND'")
       ->check(parsed_by(parse_external_method_spec, "'name=NAME;command=COMMAND'"));
-  run->add_option("--noise", run_options.noise_levels,
+  run->add_option("--noise", values->noise_levels,
                   "Noise level in % of 1 % of the diagonal, repeatable (default: 0)")
       ->check(CLI::NonNegativeNumber);
-  run->add_option("--seed", run_options.seeds, "Seed, repeatable (default: 0)");
-  run->add_option("--user", run_options.users,
+  run->add_option("--seed", values->seeds, "Seed, repeatable (default: 0)");
+  run->add_option("--user", values->users,
                   "Who answers the methods' questions: no_user (default) or oracle (from the "
                   "ground truth); repeatable");
-  run->add_flag("--no-snapshots", flags->no_snapshots, "Do not render a PNG per job");
-  run->add_flag("--no-viewer-meshes", flags->no_viewer_meshes,
+  run->add_flag("--no-snapshots", flags.no_snapshots, "Do not render a PNG per job");
+  run->add_flag("--no-viewer-meshes", flags.no_viewer_meshes,
                 "Do not write the report's 3D viewer meshes (meshes/) with the snapshots");
-  run->add_option("--workers,-j", flags->workers, "Jobs at once (default: the number of cores)")
+  run->add_option("--workers,-j", flags.workers, "Jobs at once (default: the number of cores)")
       ->check(CLI::NonNegativeNumber);
-  run->add_option("--timeout", flags->timeout,
+  run->add_option("--timeout", values->timeout,
                   "Seconds a job may take before it is stopped (default: the suite's, 300)")
       ->check(CLI::NonNegativeNumber);
-  run->add_option("--memory-limit", flags->memory_limit_text,
+  run->add_option("--memory-limit", values->memory_limit_text,
                   "Address space each job's process may take (RLIMIT_AS), e.g. 4G, 512M; 0: "
                   "none. A job past it gets the status out_of_memory and the run goes on "
                   "(default: the suite's, 4G)")
       ->type_name("SIZE")
       ->check(parsed_by(parse_memory_size, "SIZE"));
-  run->add_flag("--resume", flags->resume,
+  run->add_flag("--resume", flags.resume,
                 "Keep the records already in DIR/records.jsonl and run the rest");
-  run->add_option("--shard", flags->shard_text,
+  run->add_option("--shard", values->shard_text,
                   "Run only shard I of N (0 <= I < N): the suite's jobs i with i mod N = I, in "
                   "plan order; the N shards together are the suite, each job once (e.g. 0/4)")
       ->type_name("I/N")
       ->check(parsed_by(parse_shard, "I/N"));
-  run->add_option("--method-repetitions", flags->method_repetitions,
+  run->add_option("--method-repetitions", values->method_repetitions,
                   "Run each job's method N times and record the median wall time (the first "
                   "run's result is evaluated; default: the suite's, 1)")
       ->check(CLI::Range(1, 1000));
-  run->add_option("--hausdorff-error-bound", run_options.evaluation.hausdorff_error_bound_rel_diag,
+  run->add_option("--hausdorff-error-bound", values->hausdorff_error_bound_rel_diag,
                   "Error bound of the Hausdorff distance, relative to the diagonal")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  add_catalog_flags(run, run_options.catalog, flags->no_cad);
-  return {run, [run, flags] { return cli::run(*run, *flags); }};
+  add_catalog_flags(run, values->catalog, flags.no_cad);
+  return {run, [run, values] { return cli::run(*run, *values); }};
 }
 
 }  // namespace holebench::harness::cli
