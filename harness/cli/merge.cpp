@@ -2,9 +2,7 @@
 #include "harness/cli/subcommands.h"
 #include "harness/cluster/shard_merge.h"
 #include "harness/cluster/shard_status.h"
-#include "harness/results/results_file.h"
-#include "harness/results/results_reader.h"
-#include "harness/run/output_folder_lock.h"
+#include "harness/results/merge_results.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -44,26 +42,13 @@ int merge_sharded_run(const MergeFlags& flags) {
 }
 
 int merge_files(const MergeFlags& flags) {
-  const auto& merge_out = flags.out;
-  if (flags.inputs.empty() || merge_out.empty()) {
+  if (flags.inputs.empty() || flags.out.empty()) {
     std::fprintf(stderr, "holebench merge: give results.json files and --out, or --shards DIR\n");
     return 2;
   }
-  const OutputFolderLock lock(merge_out);
-  std::vector<ResultsData> sets;
-  for (const auto& path : flags.inputs) {
-    sets.push_back(read_results_json(path));
-    // Snapshot paths follow the merged file (the report finds the pictures).
-    for (auto& record : sets.back().records)
-      record.snapshot = snapshot_relative_to(record.snapshot, path.parent_path(), merge_out);
-  }
-  const auto merged = merge_results(sets);
-  std::filesystem::create_directories(merge_out);
-  auto context = merged.context;
-  write_results_json(merge_out / "results.json", context, merged.records);
-  write_results_csv(merge_out / "results.csv", merged.records);
-  std::fprintf(stderr, "%zu records from %zu files into %s\n", merged.records.size(), sets.size(),
-               (merge_out / "results.json").c_str());
+  const auto result = merge_results_files(flags.inputs, flags.out);
+  std::fprintf(stderr, "%zu records from %zu files into %s\n", result.merged.records.size(),
+               flags.inputs.size(), result.results_json.c_str());
   return 0;
 }
 

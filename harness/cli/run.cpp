@@ -2,6 +2,7 @@
 #include "harness/cli/common_flags.h"
 #include "harness/cli/subcommands.h"
 #include "harness/cluster/shard.h"
+#include "harness/outputs/run_summary_table.h"
 #include "harness/run/memory_limit.h"
 #include "harness/run/resolve_run_options.h"
 #include "harness/run/run_command.h"
@@ -60,31 +61,10 @@ RunFlags run_flags(const CLI::App& run, const RunCliValues& values) {
   return flags;
 }
 
-void print_summary_table(const RunSummary& summary) {
-  fmt::print(
-      "\n| case | method | noise % | status | hausdorff (rel. diag) | new faces | time (ms) |\n");
-  fmt::print("|---|---|---:|---|---:|---:|---:|\n");
-  for (const auto& r : summary.records) {
-    auto metric = [&](const char* name) {
-      for (const auto& m : r.metrics) {
-        if (m.name == name)
-          return fmt::format("{:.3g}", m.value);
-      }
-      return std::string("-");
-    };
-    fmt::print("| {} | {} | {} | {} | {} | {} | {:.1f} |\n", r.job.case_id, r.job.method_id,
-               r.job.noise_percent, to_string(r.status), metric("hausdorff_rel_diag"),
-               metric("new_faces_count"), 1000.0 * r.method_seconds);
-  }
-  fmt::print("\n{} jobs, {} not ok, {:.1f} s. Results: {} and {}\n", summary.records.size(),
-             summary.failures, summary.seconds, summary.results_json.string(),
-             summary.results_csv.string());
-}
-
 int run(const CLI::App& run, const RunCliValues& values) {
   const RunFlags flags = run_flags(run, values);
   const auto summary = run_jobs(resolve_run_options(suite_of_run_flags(flags), flags));
-  print_summary_table(summary);
+  fmt::print("{}", format_run_summary(summary));
   return 0;
 }
 

@@ -35,38 +35,25 @@ std::vector<std::size_t> shard_indices(const std::string& list) {
   return parse_shard_list(list, std::numeric_limits<std::size_t>::max());
 }
 
-void print_submission(const SlurmSubmitResult& result, const std::filesystem::path& dir) {
-  std::string command;
-  for (const auto& arg : result.sbatch_command)
-    command += (command.empty() ? "" : " ") + shell_quote(arg);
-  if (result.submitted) {
-    fmt::print("Submitted Slurm job {}: array {}\n", result.slurm_job_id, result.array);
-  } else {
-    fmt::print("Dry run: not submitted. To submit:\n  {}\n", command);
-  }
-  const auto absolute = std::filesystem::absolute(dir).lexically_normal().string();
-  fmt::print(
-      "  script:   {}\n  manifest: {}\n  logs:     {}/slurm/shard-<I>.log\n"
-      "  status:   holebench slurm status --out {}\n"
-      "  merge:    holebench merge --shards {}\n",
-      result.script.string(), result.manifest.string(), absolute, absolute, absolute);
+// "shard-1, shard-3"
+std::string shard_names(const std::vector<std::size_t>& indices) {
+  std::string names;
+  for (auto index : indices)
+    names += (names.empty() ? "" : ", ") + shard_folder_name(index);
+  return names;
 }
 
 int submit(SlurmFlags& flags) {
   auto& submit_options = flags.submit;
-  if (flags.submit_no_snapshots)
-    submit_options.run_arguments.push_back("--no-snapshots");
-  if (flags.submit_workers > 0) {
-    submit_options.run_arguments.insert(submit_options.run_arguments.end(),
-                                        {"--workers", std::to_string(flags.submit_workers)});
-  }
-  if (flags.submit_timeout >= 0.0) {
-    submit_options.run_arguments.insert(submit_options.run_arguments.end(),
-                                        {"--timeout", fmt::format("{}", flags.submit_timeout)});
-  }
+  ShardRunFlags run_flags;
+  run_flags.no_snapshots = flags.submit_no_snapshots;
+  run_flags.workers = flags.submit_workers;
+  if (flags.submit_timeout >= 0.0)
+    run_flags.timeout_seconds = flags.submit_timeout;
+  submit_options.run_arguments = shard_run_arguments(run_flags);
   submit_options.only = shard_indices(flags.submit_only);
   const auto result = submit_shards(submit_options);
-  print_submission(result, submit_options.out_dir);
+  fmt::print("{}", format_submission(result, submit_options.out_dir));
   return 0;
 }
 
@@ -83,13 +70,10 @@ int resubmit(SlurmFlags& flags) {
   if (!result.warning.empty())
     fmt::print(stderr, "holebench slurm resubmit: {}\n", result.warning);
   if (!result.still_queued.empty()) {
-    std::string queued;
-    for (auto index : result.still_queued)
-      queued += (queued.empty() ? "" : ", ") + shard_folder_name(index);
     fmt::print(
         "Still in Slurm's queue, left alone: {} (--even-if-queued to resubmit them "
         "anyway)\n",
-        queued);
+        shard_names(result.still_queued));
   }
   if (result.shards.empty() && !result.still_queued.empty())
     return 0;
@@ -100,11 +84,8 @@ int resubmit(SlurmFlags& flags) {
         resubmit_options.dir.string());
     return 0;
   }
-  std::string names;
-  for (auto index : result.shards)
-    names += (names.empty() ? "" : ", ") + shard_folder_name(index);
-  fmt::print("Resubmitting {}\n", names);
-  print_submission(result, resubmit_options.dir);
+  fmt::print("Resubmitting {}\n", shard_names(result.shards));
+  fmt::print("{}", format_submission(result, resubmit_options.dir));
   return 0;
 }
 

@@ -1,6 +1,6 @@
 #include "harness/run/runner.h"
 
-#include "harness/results/results_reader.h"
+#include "harness/results/record_json.h"
 
 #include <fcntl.h>
 #include <poll.h>
