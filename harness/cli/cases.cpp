@@ -1,5 +1,6 @@
 // holebench cases list | export | gallery: the catalog's cases, listed, written as files or
 // drawn.
+#include "core/labels_summary.h"
 #include "generators/case_catalog.h"
 #include "harness/cli/common_flags.h"
 #include "harness/cli/subcommands.h"
