@@ -1,5 +1,6 @@
 #include "harness/cluster/shard_merge.h"
 
+#include "harness/results/merge_results.h"
 #include "harness/results/results_file.h"
 #include "harness/run/output_folder_lock.h"
 #include "harness/run/runner.h"

@@ -373,4 +373,33 @@ SlurmSubmitResult resubmit_shards(const SlurmResubmitOptions& options) {
   return result;
 }
 
+std::vector<std::string> shard_run_arguments(const ShardRunFlags& flags) {
+  std::vector<std::string> arguments;
+  if (flags.no_snapshots)
+    arguments.push_back("--no-snapshots");
+  if (flags.workers > 0)
+    arguments.insert(arguments.end(), {"--workers", std::to_string(flags.workers)});
+  if (flags.timeout_seconds)
+    arguments.insert(arguments.end(), {"--timeout", fmt::format("{}", *flags.timeout_seconds)});
+  return arguments;
+}
+
+std::string format_submission(const SlurmSubmitResult& result, const std::filesystem::path& dir) {
+  std::string command;
+  for (const auto& arg : result.sbatch_command)
+    command += (command.empty() ? "" : " ") + shell_quote(arg);
+  std::string text;
+  if (result.submitted) {
+    text = fmt::format("Submitted Slurm job {}: array {}\n", result.slurm_job_id, result.array);
+  } else {
+    text = fmt::format("Dry run: not submitted. To submit:\n  {}\n", command);
+  }
+  const auto absolute = std::filesystem::absolute(dir).lexically_normal().string();
+  return text + fmt::format(
+                    "  script:   {}\n  manifest: {}\n  logs:     {}/slurm/shard-<I>.log\n"
+                    "  status:   holebench slurm status --out {}\n"
+                    "  merge:    holebench merge --shards {}\n",
+                    result.script.string(), result.manifest.string(), absolute, absolute, absolute);
+}
+
 }  // namespace holebench::harness

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,17 @@ struct SlurmSubmitOptions {
   bool dry_run = false;                     ///< write the files, do not call sbatch
   std::string sbatch = "sbatch";            ///< the sbatch command (tests use a stand-in)
 };
+
+/// The flags of `holebench slurm submit` that each task passes on to its `holebench run`.
+struct ShardRunFlags {
+  bool no_snapshots = false;              ///< --no-snapshots
+  int workers = 0;                        ///< --workers N; 0: not given (Slurm's CPUs)
+  std::optional<double> timeout_seconds;  ///< --timeout S
+};
+
+/// `flags` as arguments of `holebench run` (SlurmSubmitOptions::run_arguments): "--no-snapshots",
+/// "--workers" N, "--timeout" S (S in its shortest form: "600", "2.5"), each only if given.
+std::vector<std::string> shard_run_arguments(const ShardRunFlags& flags);
 
 struct SlurmResubmitOptions {
   std::filesystem::path dir;  ///< a sharded run's folder (DIR/shards.json)
@@ -82,6 +94,11 @@ SlurmSubmitResult submit_shards(const SlurmSubmitOptions& options);
 /// Submits again, with the script of the first submission, the shards of `options.dir` that
 /// are not complete (harness/cluster/shard_status.h), or those listed in `only`.
 SlurmSubmitResult resubmit_shards(const SlurmResubmitOptions& options);
+
+/// What `holebench slurm submit` / `resubmit` prints about a submission of the run in `dir`:
+/// the Slurm job id and array (or, in a dry run, the sbatch command to submit it), then the
+/// script, the manifest, the logs and the status and merge commands, with absolute paths.
+std::string format_submission(const SlurmSubmitResult& result, const std::filesystem::path& dir);
 
 /// `text` quoted for a POSIX shell ('...'), unquoted when it needs no quoting.
 std::string shell_quote(const std::string& text);

@@ -23,7 +23,4 @@ std::filesystem::path write_case_gallery(const generators::CaseCatalog& catalog,
                                          const std::filesystem::path& dir,
                                          const GalleryOptions& options = {});
 
-/// One line with a case's labels, e.g. "k=3 inner convex,convex,reflex close".
-std::string labels_summary(const Case& c);
-
 }  // namespace holebench::harness

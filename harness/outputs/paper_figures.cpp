@@ -1,6 +1,7 @@
 #include "harness/outputs/paper_figures.h"
 
 #include "generators/case_catalog.h"
+#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/report/summary_table.h"
 #include "methods/registry.h"
@@ -153,7 +154,7 @@ std::vector<std::filesystem::path> write_table_2(
       "input tri. & new tri.",
       std::string(methods.size(), 'r'), what);
   for (const auto& method : methods)
-    tex += " & " + report::latex_escape(method);
+    tex += " & " + latex_escape(method);
   tex += " \\\\\n\\midrule\n";
   for (const auto& [key, row] : rows) {
     std::vector<std::string> values = {fmt::format("{}", row.error.begin()->second.size()),
@@ -163,7 +164,7 @@ std::vector<std::filesystem::path> write_table_2(
       values.push_back(
           cell(row.error.count(method) ? row.error.at(method) : std::vector<double>{}));
     md += fmt::format("| {} | {} | {} |\n", key.first, key.second, fmt::join(values, " | "));
-    tex += fmt::format("{} & {} & {} \\\\\n", report::latex_escape(key.first), key.second,
+    tex += fmt::format("{} & {} & {} \\\\\n", latex_escape(key.first), key.second,
                        fmt::join(values, " & "));
   }
   tex += "\\bottomrule\n\\end{tabular}\n";

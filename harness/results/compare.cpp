@@ -225,20 +225,6 @@ Comparison compare_results(const ResultsData& base, const ResultsData& now,
 
 namespace {
 
-std::string markdown_cell(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '|') {
-      out += "\\|";
-    } else if (c == '\n' || c == '\r') {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
 std::string number(double value) {
   return fmt::format("{:.6g}", value);
 }

@@ -303,4 +303,12 @@ JobRecord record_from_json(const nlohmann::json& j) {
   return record;
 }
 
+std::string record_to_json_line(const JobRecord& record) {
+  return record_to_json(record).dump();
+}
+
+JobRecord record_from_json_text(const std::string& json_text) {
+  return record_from_json(nlohmann::json::parse(json_text));
+}
+
 }  // namespace holebench::harness

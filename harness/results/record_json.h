@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+
 namespace holebench::harness {
 
 nlohmann::ordered_json context_to_json(const RunContext& context);
@@ -19,6 +21,12 @@ nlohmann::ordered_json record_to_json(const JobRecord& record);
 /// an unknown status, or with a field of the wrong type or out of its type's range (a string
 /// for a number, a negative count, an integer too large for its type).
 JobRecord record_from_json(const nlohmann::json& j);
+
+/// The JSON text of one record (one line, as the runner appends it to records.jsonl).
+std::string record_to_json_line(const JobRecord& record);
+/// One record from its JSON text (as record_to_json_line writes it); throws as
+/// record_from_json does, or nlohmann::json::parse_error for text that is not JSON.
+JobRecord record_from_json_text(const std::string& json_text);
 
 nlohmann::ordered_json point_to_json(const Point& p);  ///< [x, y, z]
 

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <map>
 #include <sstream>
 
 namespace holebench::harness {
@@ -56,37 +55,6 @@ ResultsData read_results_json(const std::filesystem::path& path) {
     ++index;
   }
   return data;
-}
-
-JobRecord record_from_json_text(const std::string& json_text) {
-  return record_from_json(nlohmann::json::parse(json_text));
-}
-
-std::string record_to_json_line(const JobRecord& record) {
-  return record_to_json(record).dump();
-}
-
-std::string snapshot_relative_to(const std::string& snapshot, const std::filesystem::path& from_dir,
-                                 const std::filesystem::path& to_dir) {
-  if (snapshot.empty())
-    return snapshot;
-  const auto absolute = std::filesystem::absolute(from_dir / snapshot).lexically_normal();
-  return absolute.lexically_relative(std::filesystem::absolute(to_dir).lexically_normal())
-      .generic_string();
-}
-
-ResultsData merge_results(const std::vector<ResultsData>& sets) {
-  ResultsData merged;
-  if (!sets.empty())
-    merged.context = sets.front().context;
-  std::map<std::string, JobRecord> by_id;
-  for (const auto& set : sets) {
-    for (const auto& record : set.records)
-      by_id[record.job.id()] = record;
-  }
-  for (auto& [id, record] : by_id)
-    merged.records.push_back(std::move(record));
-  return merged;
 }
 
 }  // namespace holebench::harness

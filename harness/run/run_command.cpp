@@ -1,5 +1,6 @@
 #include "harness/run/run_command.h"
 
+#include "core/stopwatch.h"
 #include "generators/case_catalog.h"
 #include "harness/results/results_file.h"
 #include "harness/run/case_selection.h"
@@ -116,7 +117,7 @@ generators::CatalogOptions run_catalog_options(const RunOptions& options) {
 }
 
 RunSummary run_jobs(const RunOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   const OutputFolderLock lock(options.out_dir);  // one run per folder, until this returns
   const generators::CaseCatalog catalog(run_catalog_options(options));
   print_skipped_models(catalog);
@@ -160,7 +161,7 @@ RunSummary run_jobs(const RunOptions& options) {
     context.shard = to_string(options.shard);
   write_results_json(summary.results_json, context, summary.records);
   write_results_csv(summary.results_csv, summary.records);
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.seconds = seconds_since(start);
   return summary;
 }
 

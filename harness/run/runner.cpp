@@ -1,6 +1,7 @@
 #include "harness/run/runner.h"
 
-#include "harness/results/results_reader.h"
+#include "core/stopwatch.h"
+#include "harness/results/record_json.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -39,7 +40,7 @@ std::vector<JobRecord> read_records_jsonl(const std::filesystem::path& path) {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 struct Child {
   pid_t pid = -1;
@@ -196,7 +197,7 @@ class Progress {
   void update(std::size_t done, std::size_t failures, const std::string& last) {
     if (!enabled_)
       return;
-    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    const double elapsed = seconds_since(start_);
     const std::size_t done_now = done > already_done_ ? done - already_done_ : 0;
     const double rate = elapsed > 0 ? done_now / elapsed : 0.0;
     const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
@@ -294,7 +295,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
         if (n > 0)
           continue;  // more may follow; the pipe closes when the child ends
       }
-      const double elapsed = std::chrono::duration<double>(Clock::now() - child.started).count();
+      const double elapsed = seconds_since(child.started);
       if (options.timeout_seconds > 0 && elapsed > options.timeout_seconds && !child.timed_out) {
         ::kill(-child.pid, SIGKILL);  // the job's process group
         child.timed_out = true;
@@ -328,7 +329,7 @@ RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_o
   for (const auto& job : jobs)
     result.records.push_back(done.at(job.id()));
   result.failures = failures;
-  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.seconds = seconds_since(start);
   return result;
 }
 

@@ -3,6 +3,7 @@
 // Property: any bytes are either read or refused with an InvalidInputError naming the file
 // (a records.jsonl line: any std::exception, the line is skipped); never a crash.
 #include "core/errors.h"
+#include "harness/results/record_json.h"
 #include "harness/results/results_reader.h"
 #include "harness/results/validate_results.h"
 #include "tests/fuzz/fuzz_input_file.h"

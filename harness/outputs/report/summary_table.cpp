@@ -42,13 +42,6 @@ std::string short_number(double value) {
   return fmt::format("{:.3g}", value);
 }
 
-std::string markdown_cell(const std::string& text) {
-  std::string out;
-  for (char c : text)
-    out += c == '|' ? std::string("\\|") : std::string(1, c);
-  return out;
-}
-
 std::string latex_number(double value) {
   const std::string text = short_number(value);
   const auto e = text.find('e');
@@ -207,36 +200,6 @@ std::string summary_csv(const SummaryTable& table) {
         out += "0,,,,,,,";
       }
       out += csv_field(row.note()) + "\n";
-    }
-  }
-  return out;
-}
-
-std::string latex_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '\\':
-        out += "\\textbackslash{}";
-        break;
-      case '&':
-      case '%':
-      case '$':
-      case '#':
-      case '_':
-      case '{':
-      case '}':
-        out += '\\';
-        out += c;
-        break;
-      case '~':
-        out += "\\textasciitilde{}";
-        break;
-      case '^':
-        out += "\\textasciicircum{}";
-        break;
-      default:
-        out += c;
     }
   }
   return out;

@@ -4,6 +4,7 @@
 // unstable rows flagged with what to do about them, every format from the same data.
 #pragma once
 
+#include "harness/outputs/markup_escape.h"  // markdown_cell, latex_escape: the tables' cells
 #include "harness/results/results_reader.h"
 
 #include <cstddef>
@@ -81,17 +82,11 @@ std::string summary_csv(const SummaryTable& table);
 /// (n, median, IQR, min, max); text escaped.
 std::string summary_latex(const SummaryTable& table);
 
-/// Escapes LaTeX's special characters (\ & % $ # _ { } ~ ^).
-std::string latex_escape(const std::string& text);
-
 /// 3 significant digits, as every human-facing table shows numbers.
 std::string short_number(double value);
 
 /// short_number for LaTeX: "1.23e-05" becomes "$1.23\times10^{-5}$".
 std::string latex_number(double value);
-
-/// Text for a Markdown table cell: '|' escaped.
-std::string markdown_cell(const std::string& text);
 
 /// The opening of a booktabs table: caption, label `tab:holebench-<label>`, the tabular's
 /// column spec, the header row and \midrule.

@@ -6,6 +6,7 @@
 #include "harness/cluster/shard.h"
 #include "harness/cluster/shard_manifest.h"
 #include "harness/cluster/shard_status.h"
+#include "harness/results/record_json.h"
 #include "harness/results/results_file.h"
 #include "harness/run/output_folder_lock.h"
 

@@ -4,6 +4,7 @@
 #include "harness/cluster/slurm_submit.h"
 
 #include "harness/cluster/shard_manifest.h"
+#include "harness/results/record_json.h"
 #include "harness/results/results_reader.h"
 
 #include <gtest/gtest.h>
@@ -199,6 +200,45 @@ TEST(SlurmSubmit, ShellQuoting) {
   EXPECT_EQ(shell_quote("a b"), "'a b'");
   EXPECT_EQ(shell_quote("it's"), "'it'\\''s'");
   EXPECT_EQ(shell_quote(""), "''");
+}
+
+// The flags `slurm submit` passes on to each task's `holebench run`: only those given, in a
+// fixed order; a timeout in its shortest form.
+TEST(SlurmSubmit, ShardRunArgumentsAreTheFlagsGiven) {
+  EXPECT_TRUE(shard_run_arguments({}).empty());
+  ShardRunFlags flags;
+  flags.no_snapshots = true;
+  flags.workers = 8;
+  flags.timeout_seconds = 2.5;
+  EXPECT_EQ(shard_run_arguments(flags),
+            (std::vector<std::string>{"--no-snapshots", "--workers", "8", "--timeout", "2.5"}));
+  ShardRunFlags timeout_only;
+  timeout_only.timeout_seconds = 600.0;
+  EXPECT_EQ(shard_run_arguments(timeout_only), (std::vector<std::string>{"--timeout", "600"}));
+  timeout_only.timeout_seconds = 0.0;  // 0: no limit, passed on like any other value
+  EXPECT_EQ(shard_run_arguments(timeout_only), (std::vector<std::string>{"--timeout", "0"}));
+}
+
+// What submit prints: the job id and array when submitted, the quoted sbatch command in a dry
+// run, then where everything is.
+TEST(SlurmSubmit, FormatSubmission) {
+  SlurmSubmitResult result;
+  result.script = "/runs/r/slurm/shards.sbatch";
+  result.manifest = "/runs/r/shards.json";
+  result.sbatch_command = {"sbatch", "--array=0-3", "--comment=a b", "/runs/r/slurm/shards.sbatch"};
+  const std::string where =
+      "  script:   /runs/r/slurm/shards.sbatch\n  manifest: /runs/r/shards.json\n"
+      "  logs:     /runs/r/slurm/shard-<I>.log\n"
+      "  status:   holebench slurm status --out /runs/r\n"
+      "  merge:    holebench merge --shards /runs/r\n";
+  EXPECT_EQ(format_submission(result, "/runs/r"),
+            "Dry run: not submitted. To submit:\n"
+            "  sbatch --array=0-3 '--comment=a b' /runs/r/slurm/shards.sbatch\n" +
+                where);
+  result.submitted = true;
+  result.slurm_job_id = "4242";
+  result.array = "0-3";
+  EXPECT_EQ(format_submission(result, "/runs/r"), "Submitted Slurm job 4242: array 0-3\n" + where);
 }
 
 }  // namespace

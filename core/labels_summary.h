@@ -1,0 +1,17 @@
+// A case's labels as one line of text, for people: `holebench cases list --labels` and the
+// captions of the case gallery.
+#pragma once
+
+#include "core/case.h"
+
+#include <string>
+
+namespace holebench {
+
+/// One line with the labels of a case's holes, "; " between holes, e.g. "k=3 inner
+/// [convex,convex,reflex] size 0.05 vs 0.06: close" (then, where they apply, " boundary
+/// inner,outer", " parallel faces", " (weak spot: ...)"); a hole without labels is
+/// "<target> (no labels)".
+std::string labels_summary(const Case& c);
+
+}  // namespace holebench

@@ -1,0 +1,162 @@
+#include "harness/run/resolve_run_options.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace holebench::harness {
+namespace {
+
+const std::filesystem::path kSuitesDir = std::filesystem::path(HOLEBENCH_SOURCE_DIR) / "suites";
+
+ExternalMethodSpec external(const std::string& name) {
+  ExternalMethodSpec spec;
+  spec.name = name;
+  spec.command = "true {input} {output}";
+  return spec;
+}
+
+// A suite whose every field differs from the built-in defaults, so that a field taken from it
+// cannot be told apart from a default by accident.
+Suite unusual_suite() {
+  Suite suite;
+  suite.name = "unusual";
+  suite.case_patterns = {"box/*"};
+  suite.methods = {"liepa_cgal"};
+  suite.external_methods = {external("from_suite")};
+  suite.users = {"oracle"};
+  suite.noise_levels = {5.0, 25.0};
+  suite.seeds = {3};
+  suite.include_cad = false;
+  suite.timeout_seconds = 42.0;
+  suite.memory_limit_bytes = 123456789;
+  suite.method_repetitions = 3;
+  suite.evaluation.hausdorff_error_bound_rel_diag = 2e-3;
+  return suite;
+}
+
+// Without flags, a run is the suite's: every field the suite has comes through unchanged.
+TEST(ResolveRunOptions, WithoutFlagsTheSuiteDecides) {
+  RunFlags flags;
+  flags.out_dir = "out";
+  const RunOptions options = resolve_run_options(unusual_suite(), flags);
+  EXPECT_EQ(options.out_dir, "out");
+  EXPECT_EQ(options.suite_name, "unusual");
+  EXPECT_EQ(options.case_patterns, std::vector<std::string>{"box/*"});
+  EXPECT_EQ(options.method_ids, std::vector<std::string>{"liepa_cgal"});
+  ASSERT_EQ(options.external_methods.size(), 1u);
+  EXPECT_EQ(options.external_methods[0].name, "from_suite");
+  EXPECT_EQ(options.users, std::vector<std::string>{"oracle"});
+  EXPECT_EQ(options.noise_levels, (std::vector<double>{5.0, 25.0}));
+  EXPECT_EQ(options.seeds, std::vector<std::uint64_t>{3});
+  EXPECT_FALSE(options.catalog.include_cad);
+  EXPECT_EQ(options.runner.timeout_seconds, 42.0);
+  EXPECT_EQ(options.runner.memory_limit_bytes, 123456789u);
+  EXPECT_EQ(options.method_repetitions, 3);
+  EXPECT_EQ(options.evaluation.hausdorff_error_bound_rel_diag, 2e-3);
+  // What a suite does not say: the flags' defaults.
+  EXPECT_TRUE(options.snapshots);
+  EXPECT_TRUE(options.viewer_meshes);
+  EXPECT_EQ(options.runner.workers, 0);
+  EXPECT_FALSE(options.runner.resume);
+  EXPECT_EQ(options.shard.index, 0u);
+  EXPECT_EQ(options.shard.count, 1u);
+}
+
+// Every flag given overrides its field of the suite; --external runs after the suite's.
+TEST(ResolveRunOptions, EachFlagGivenOverridesTheSuite) {
+  RunFlags flags;
+  flags.case_patterns = {"brep/k3/*"};
+  flags.method_ids = {"slice_loft", "crest_feature"};
+  flags.external_methods = {external("from_flag")};
+  flags.noise_levels = std::vector<double>{0.0};
+  flags.seeds = std::vector<std::uint64_t>{7, 8};
+  flags.users = std::vector<std::string>{"no_user"};
+  flags.hausdorff_error_bound_rel_diag = 1e-5;
+  flags.timeout_seconds = 0.0;  // 0: no limit, a value like any other
+  flags.memory_limit_bytes = 0;
+  flags.method_repetitions = 5;
+  flags.shard = ShardSpec{2, 4};
+  flags.cad_data_dir = "cad";
+  flags.no_snapshots = true;
+  flags.no_viewer_meshes = true;
+  flags.workers = 2;
+  flags.resume = true;
+  const RunOptions options = resolve_run_options(unusual_suite(), flags);
+  EXPECT_EQ(options.suite_name, "unusual");
+  EXPECT_EQ(options.case_patterns, std::vector<std::string>{"brep/k3/*"});
+  EXPECT_EQ(options.method_ids, (std::vector<std::string>{"slice_loft", "crest_feature"}));
+  ASSERT_EQ(options.external_methods.size(), 2u);
+  EXPECT_EQ(options.external_methods[0].name, "from_suite");
+  EXPECT_EQ(options.external_methods[1].name, "from_flag");
+  EXPECT_EQ(options.noise_levels, std::vector<double>{0.0});
+  EXPECT_EQ(options.seeds, (std::vector<std::uint64_t>{7, 8}));
+  EXPECT_EQ(options.users, std::vector<std::string>{"no_user"});
+  EXPECT_EQ(options.evaluation.hausdorff_error_bound_rel_diag, 1e-5);
+  EXPECT_EQ(options.runner.timeout_seconds, 0.0);
+  EXPECT_EQ(options.runner.memory_limit_bytes, 0u);
+  EXPECT_EQ(options.method_repetitions, 5);
+  EXPECT_EQ(options.shard.index, 2u);
+  EXPECT_EQ(options.shard.count, 4u);
+  EXPECT_EQ(options.catalog.cad_data_dir, "cad");
+  EXPECT_FALSE(options.snapshots);
+  EXPECT_FALSE(options.viewer_meshes);
+  EXPECT_EQ(options.runner.workers, 2);
+  EXPECT_TRUE(options.runner.resume);
+}
+
+// --no-cad only ever leaves the CAD models out; without it the suite's choice stands.
+TEST(ResolveRunOptions, NoCadLeavesOutButNeverBringsIn) {
+  Suite with_cad = unusual_suite();
+  with_cad.include_cad = true;
+  RunFlags flags;
+  EXPECT_TRUE(resolve_run_options(with_cad, flags).catalog.include_cad);
+  EXPECT_FALSE(resolve_run_options(unusual_suite(), flags).catalog.include_cad);
+  flags.no_cad = true;
+  EXPECT_FALSE(resolve_run_options(with_cad, flags).catalog.include_cad);
+}
+
+// --mesh and --brep-deflection describe the user's files, which no suite names.
+TEST(ResolveRunOptions, MeshesAndTessellationComeFromTheFlags) {
+  RunFlags flags;
+  flags.user_meshes = {"part.step"};
+  flags.brep_tessellation.linear_deflection_rel_diag = 0.01;
+  const RunOptions options = resolve_run_options(unusual_suite(), flags);
+  EXPECT_EQ(options.catalog.user_meshes, std::vector<std::filesystem::path>{"part.step"});
+  EXPECT_EQ(options.catalog.prepare.tessellation.linear_deflection_rel_diag, 0.01);
+}
+
+// Which suite a run starts from: --suite; else the default suite unless --case is given;
+// else the built-in defaults, named "ad hoc" in the results' context.
+TEST(ResolveRunOptions, TheSuiteARunStartsFrom) {
+  RunFlags flags;
+  EXPECT_EQ(suite_of_run_flags(flags, kSuitesDir).name, "default");
+  flags.suite = "smoke";
+  EXPECT_EQ(suite_of_run_flags(flags, kSuitesDir).name, "smoke");
+  flags.case_patterns = {"box/*"};
+  EXPECT_EQ(suite_of_run_flags(flags, kSuitesDir).name, "smoke");
+  flags.suite.clear();
+  const Suite ad_hoc = suite_of_run_flags(flags, kSuitesDir);
+  EXPECT_EQ(ad_hoc.name, "ad hoc");
+
+  // An ad hoc run is the built-in RunOptions with the flags given.
+  const RunOptions options = resolve_run_options(ad_hoc, flags);
+  const RunOptions built_in;
+  EXPECT_EQ(options.suite_name, built_in.suite_name);
+  EXPECT_EQ(options.case_patterns, std::vector<std::string>{"box/*"});
+  EXPECT_EQ(options.method_ids, built_in.method_ids);
+  EXPECT_TRUE(options.external_methods.empty());
+  EXPECT_EQ(options.users, built_in.users);
+  EXPECT_EQ(options.noise_levels, built_in.noise_levels);
+  EXPECT_EQ(options.seeds, built_in.seeds);
+  EXPECT_EQ(options.catalog.include_cad, built_in.catalog.include_cad);
+  EXPECT_EQ(options.catalog.cad_data_dir, built_in.catalog.cad_data_dir);
+  EXPECT_EQ(options.runner.timeout_seconds, built_in.runner.timeout_seconds);
+  EXPECT_EQ(options.runner.memory_limit_bytes, built_in.runner.memory_limit_bytes);
+  EXPECT_EQ(options.method_repetitions, built_in.method_repetitions);
+  EXPECT_EQ(options.evaluation.hausdorff_error_bound_rel_diag,
+            built_in.evaluation.hausdorff_error_bound_rel_diag);
+}
+
+}  // namespace
+}  // namespace holebench::harness
