@@ -1,5 +1,9 @@
 #include "harness/run/resolve_run_options.h"
 
+#include "core/errors.h"
+
+#include <fmt/format.h>
+
 namespace holebench::harness {
 
 Suite suite_of_run_flags(const RunFlags& flags, const std::filesystem::path& suites_dir) {
@@ -30,7 +34,19 @@ RunOptions resolve_run_options(const Suite& suite, const RunFlags& flags) {
   if (flags.hausdorff_error_bound_rel_diag)
     options.evaluation.hausdorff_error_bound_rel_diag = *flags.hausdorff_error_bound_rel_diag;
 
-  options.catalog.user_meshes = flags.user_meshes;
+  if (!flags.user_meshes.empty()) {
+    options.catalog.user_meshes = flags.user_meshes;
+  } else {
+    for (std::size_t i = 0; i < suite.meshes.size(); ++i) {
+      if (!std::filesystem::exists(suite.meshes[i])) {
+        throw InvalidInputError(fmt::format(
+            "suite {}: field \"meshes[{}]\": {} does not exist (from {}; a relative path is "
+            "relative to the current directory)",
+            suite.name, i, suite.meshes[i].string(), std::filesystem::current_path().string()));
+      }
+    }
+    options.catalog.user_meshes = suite.meshes;
+  }
   options.catalog.prepare.tessellation = flags.brep_tessellation;
   if (flags.cad_data_dir)
     options.catalog.cad_data_dir = *flags.cad_data_dir;

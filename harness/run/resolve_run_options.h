@@ -54,8 +54,9 @@ Suite suite_of_run_flags(const RunFlags& flags,
 /// overriding its field: cases, methods, noise levels, seeds, users, the Hausdorff error
 /// bound, the timeout, the memory limit, the method repetitions; --no-cad leaves the CAD
 /// models out even where the suite includes them; --external methods run after the suite's.
-/// The rest (output folder, meshes, B-Rep tessellation, snapshots, workers, resume, shard)
-/// comes from `flags` alone.
+/// The suite's meshes unless --mesh is given (a missing one is an InvalidInputError naming
+/// the suite and the field). The rest (output folder, B-Rep tessellation, snapshots, workers,
+/// resume, shard) comes from `flags` alone.
 RunOptions resolve_run_options(const Suite& suite, const RunFlags& flags);
 
 }  // namespace holebench::harness

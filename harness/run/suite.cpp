@@ -176,8 +176,8 @@ std::uint64_t memory_limit_from(const nlohmann::json& j) {
 Suite suite_from_json(const nlohmann::json& j, const std::filesystem::path& path) {
   check_known_fields(j, "",
                      {"name", "description", "cases", "methods", "external_methods", "users",
-                      "noise_percent", "seeds", "include_cad", "timeout_s", "memory_limit",
-                      "method_repetitions", "evaluation", "tolerances"});
+                      "noise_percent", "seeds", "include_cad", "meshes", "timeout_s",
+                      "memory_limit", "method_repetitions", "evaluation", "tolerances"});
   Suite suite;
   suite.name = string_field(j, "", "name", path.stem().string());
   suite.description = string_field(j, "", "description", "");
@@ -200,6 +200,12 @@ Suite suite_from_json(const nlohmann::json& j, const std::filesystem::path& path
     non_negative(suite.noise_levels[i], "noise_percent[" + std::to_string(i) + "]");
   suite.seeds = not_empty(unsigned_list_field(j, "", "seeds", suite.seeds), "seeds");
   suite.include_cad = bool_field(j, "", "include_cad", suite.include_cad);
+  const auto meshes = string_list_field(j, "", "meshes", {});
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (meshes[i].empty())
+      throw std::invalid_argument("field \"meshes[" + std::to_string(i) + "]\" is empty");
+    suite.meshes.emplace_back(meshes[i]);
+  }
   suite.timeout_seconds =
       non_negative(number_field(j, "", "timeout_s", suite.timeout_seconds), "timeout_s");
   suite.memory_limit_bytes = memory_limit_from(j);

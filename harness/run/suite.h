@@ -60,6 +60,10 @@ struct Suite {
   std::vector<double> noise_levels{0.0};
   std::vector<std::uint64_t> seeds{0};
   bool include_cad = true;
+  /// "meshes": the user's model files or folders (meshes, STEP, IGES, BREP), read as
+  /// `--mesh` is; a relative path is relative to the current directory. Their cases are
+  /// file/<stem>/...; `--mesh` replaces them.
+  std::vector<std::filesystem::path> meshes;
   double timeout_seconds = 300.0;  ///< per job
   /// "memory_limit": each job's address space ("4G", "512MiB", bytes; "0": none); default
   /// 4 GiB (harness/run/memory_limit.h).

@@ -1,5 +1,7 @@
 #include "harness/run/resolve_run_options.h"
 
+#include "core/errors.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -116,7 +118,34 @@ TEST(ResolveRunOptions, NoCadLeavesOutButNeverBringsIn) {
   EXPECT_FALSE(resolve_run_options(with_cad, flags).catalog.include_cad);
 }
 
-// --mesh and --brep-deflection describe the user's files, which no suite names.
+// A suite may name the user's model folders ("meshes", as the kicad suite does); --mesh
+// replaces them; a folder that does not exist is an error naming the suite and the field.
+TEST(ResolveRunOptions, TheSuitesMeshesUnlessMeshIsGiven) {
+  const auto dir = std::filesystem::temp_directory_path() / "holebench_suite_meshes";
+  std::filesystem::create_directories(dir);
+  Suite suite = unusual_suite();
+  suite.meshes = {dir};
+  EXPECT_EQ(resolve_run_options(suite, RunFlags{}).catalog.user_meshes,
+            std::vector<std::filesystem::path>{dir});
+  RunFlags flags;
+  flags.user_meshes = {"part.step"};
+  EXPECT_EQ(resolve_run_options(suite, flags).catalog.user_meshes,
+            std::vector<std::filesystem::path>{"part.step"});
+  suite.meshes = {dir, dir / "no_such_folder"};
+  try {
+    resolve_run_options(suite, RunFlags{});
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("suite unusual: field \"meshes[1]\""), std::string::npos)
+        << e.what();
+  }
+  // The kicad suite names the folder scripts/fetch_kicad_subset.sh fills.
+  const Suite kicad = load_suite("kicad", kSuitesDir);
+  EXPECT_EQ(kicad.meshes, std::vector<std::filesystem::path>{"build/kicad-step"});
+  EXPECT_FALSE(kicad.include_cad);
+}
+
+// --mesh and --brep-deflection describe the user's files.
 TEST(ResolveRunOptions, MeshesAndTessellationComeFromTheFlags) {
   RunFlags flags;
   flags.user_meshes = {"part.step"};

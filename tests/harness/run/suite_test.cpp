@@ -13,7 +13,7 @@ namespace {
 // The suites the README names exist, parse, and select something.
 TEST(Suite, TheShippedSuitesLoad) {
   const auto names = list_suites();
-  for (const char* name : {"default", "smoke", "nightly", "paper"}) {
+  for (const char* name : {"default", "smoke", "nightly", "paper", "kicad"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
     const Suite suite = load_suite(name);
     EXPECT_EQ(suite.name, name);
