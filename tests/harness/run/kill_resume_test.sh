@@ -4,7 +4,9 @@
 # moments of a small part of the smoke suite, resumed each time with --resume, ends with the
 # same records as an uninterrupted run, up to timings. Then `holebench merge --shards` killed
 # at random moments never leaves a half-written results.json: after each kill the file is
-# either absent or the complete merged file, and a rerun gives the same records.
+# either absent or the complete merged file, and a rerun gives the same records. Last,
+# `holebench report` killed at random moments never leaves a half-written file in report/:
+# each file there is absent or the whole file an uninterrupted report writes.
 #
 # Usage: kill_resume_test.sh HOLEBENCH WORK_DIR   (HOLEBENCH_KILL_SEED: the moments' seed)
 set -euo pipefail
@@ -160,3 +162,31 @@ done
 "$holebench" merge --shards "$shards" --out "$merged" > /dev/null 2>&1
 same_records "$work/merged_reference/results.json" "$merged/results.json"
 echo "merge --shards: killed 12 times, never a half-written results.json"
+
+# report: killed at random moments of its run; every file it has written is whole.
+reported="$work/reported"
+cp -r "$work/reference" "$work/report_reference"
+start=$(date +%s.%N)
+"$holebench" report "$work/report_reference" > /dev/null 2>&1
+report_seconds=$(python3 -c "import time; print(time.time() - $start)")
+moments=$(python3 -c "
+import random
+r = random.Random($seed + 2)
+print(' '.join(f'{r.uniform(0.0, $report_seconds):.3f}' for _ in range(4)))")
+cp -r "$work/reference" "$reported"
+for moment in $moments; do
+  setsid "$holebench" report "$reported" > /dev/null 2>&1 &
+  pid=$!
+  sleep "$moment"
+  kill_tree "$pid"
+  while IFS= read -r -d '' file; do
+    relative="${file#"$reported/report/"}"
+    case "$relative" in *.partial) continue ;; esac
+    cmp -s "$file" "$work/report_reference/report/$relative" \
+      || { echo "kill_resume_test: report killed at $moment s left a partial $relative" >&2; exit 1; }
+  done < <(find "$reported/report" -type f -print0 2> /dev/null)
+done
+"$holebench" report "$reported" > /dev/null 2>&1
+diff -r --exclude='*.partial' "$work/report_reference/report" "$reported/report" > /dev/null \
+  || { echo "kill_resume_test: the report after the kills differs" >&2; exit 1; }
+echo "report: killed 4 times (report takes $report_seconds s), never a partial file"
