@@ -5,20 +5,32 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace holebench::harness::cli {
 
 namespace {
 
 int list_methods_and_families() {
+  const auto methods = make_all_methods();
+  const auto variants = make_methods_run_by_name();
+  const auto external = predefined_external_methods();
+  std::size_t width = 16;  // one column of names for the three lists
+  for (const auto* list : {&methods, &variants}) {
+    for (const auto& m : *list)
+      width = std::max(width, m->id().size());
+  }
+  for (const auto& spec : external)
+    width = std::max(width, spec.name.size());
   fmt::print("methods:\n");
-  for (const auto& m : make_all_methods())
-    fmt::print("  {:<16} {}\n", m->id(), m->description());
+  for (const auto& m : methods)
+    fmt::print("  {:<{}} {}\n", m->id(), width, m->description());
   fmt::print("variants run by name only (--method ID):\n");
-  for (const auto& m : make_methods_run_by_name())
-    fmt::print("  {:<16} {}\n", m->id(), m->description());
+  for (const auto& m : variants)
+    fmt::print("  {:<{}} {}\n", m->id(), width, m->description());
   fmt::print("external methods holebench predefines (run by name: --method NAME):\n");
-  for (const auto& spec : predefined_external_methods())
-    fmt::print("  {:<16} {}\n", spec.name, spec.command);
+  for (const auto& spec : external)
+    fmt::print("  {:<{}} {}\n", spec.name, width, spec.command);
   fmt::print(
       "case families (see `holebench cases list`):\n"
       "  box/<target>                  the walking skeleton's box holes\n"
