@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -55,12 +56,20 @@ struct TrueFeatures {
   std::vector<std::array<int, 2>> corner_links;
 };
 
-// The polylines of `edges` cut where one turns by more than `bend_angle_degrees` at an inner
-// point (a bend, appended to `bends`); unchanged where the angle is 180 or more.
+// The polylines of `edges` that run from boundary to boundary (neither end `at_corner`), cut
+// where one turns by more than `bend_angle_degrees` at an inner point (a bend, appended to
+// `bends`); unchanged where the angle is 180 or more. An edge that ends at a missing corner is
+// left whole: a bend beside the corner would take the edge from the corner's lines.
 std::vector<std::vector<Point>> cut_at_bends(const std::vector<std::vector<Point>>& edges,
-                                             double bend_angle_degrees, std::vector<Point>& bends) {
+                                             double bend_angle_degrees,
+                                             const std::function<bool(const Point&)>& at_corner,
+                                             std::vector<Point>& bends) {
   std::vector<std::vector<Point>> pieces;
   for (const auto& polyline : edges) {
+    if (polyline.empty() || at_corner(polyline.front()) || at_corner(polyline.back())) {
+      pieces.push_back(polyline);
+      continue;
+    }
     std::vector<Point> piece;
     for (std::size_t k = 0; k < polyline.size(); ++k) {
       piece.push_back(polyline[k]);
@@ -85,8 +94,13 @@ TrueFeatures true_features(const HoleTruth& truth, double tolerance, const Oracl
   // The missing corners, then (with the corner graph) the bends of the missing edges: the
   // user draws a bent edge as two feature lines that meet at the bend.
   std::vector<Point> corner_points = truth.missing_corners;
+  auto at_missing_corner = [&](const Point& p) {
+    return std::any_of(truth.missing_corners.begin(), truth.missing_corners.end(),
+                       [&](const Point& c) { return same(p, c); });
+  };
   const std::vector<std::vector<Point>> edges =
-      corner_graph ? cut_at_bends(truth.missing_edges, options.bend_angle_degrees, corner_points)
+      corner_graph ? cut_at_bends(truth.missing_edges, options.bend_angle_degrees,
+                                  at_missing_corner, corner_points)
                    : truth.missing_edges;
   auto at_corner = [&](const Point& p) -> int {
     for (std::size_t i = 0; i < corner_points.size(); ++i) {

@@ -40,10 +40,11 @@ struct OracleOptions {
   /// corners, two corners joined by an edge) and draws the edges between such corners
   /// (FeaturePointProposal::more_corners, corner_links). False: the paper's user step only.
   bool corner_graph = true;
-  /// With the corner graph: a missing edge that turns by more than this angle at a point
-  /// inside the hole (a bend, no missing corner) is drawn as two feature lines meeting at the
-  /// bend, a corner of the graph reached by two lines; the paper's Catmull-Rom spline (eq. 3)
-  /// cannot bend there. The fandisk's two-crease hole has one (about 100 degrees).
+  /// With the corner graph: a missing edge from boundary to boundary that turns by more than
+  /// this angle at a point inside the hole (a bend, no missing corner) is drawn as two feature
+  /// lines meeting at the bend, a corner of the graph reached by two lines; the paper's
+  /// Catmull-Rom spline (eq. 3) cannot bend there. The fandisk's two-crease hole has one
+  /// (about 100 degrees).
   double bend_angle_degrees = 45.0;
 };
 

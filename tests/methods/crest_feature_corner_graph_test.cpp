@@ -6,6 +6,7 @@
 
 #include "generators/case_catalog.h"
 #include "metrics/evaluation.h"
+#include "tests/methods/metric_lookup.h"
 
 // The oracle user lives in the harness library (linked by methods_tests).
 #include "harness/run/oracle_user.h"
@@ -20,10 +21,7 @@ namespace {
 
 using namespace crest_feature;
 
-double metric(const Evaluation& e, const std::string& name) {
-  const MetricValue* v = e.find(name);
-  return v ? v->value : -1.0;
-}
+using test::metric;
 
 // A square hole of 8 boundary vertices: (0,0) (1,0) (2,0) (2,1) (2,2) (1,2) (0,2) (0,1).
 Hole square_hole() {
@@ -166,6 +164,17 @@ TEST(CrestFeatureCornerGraph, OracleDrawsABentCreaseAsTwoLinesMeetingAtTheBend) 
   harness::OracleUser oracle(c);
   expect_graph_restores_every_edge(c, oracle, "further corners 1; corner links 0", smooth);
   EXPECT_EQ(oracle.interventions_by_kind().at("corner_named"), 1);
+}
+
+// Only an edge from boundary to boundary is cut at a bend. On cad/couplingdown/corner_crr one
+// edge turns by 74 degrees one segment before it reaches a missing corner; cut there, the
+// corner lost that edge's line (one line left: not named), its link went with it, and the
+// oracle's graph restored a third of the hole's six edges instead of all of them.
+TEST(CrestFeatureCornerGraph, EdgeThatEndsAtAMissingCornerIsNotCutAtABend) {
+  const Case c = generators::make_case("cad/couplingdown/corner_crr/small");
+  ASSERT_EQ(c.holes.size(), 1u);
+  ASSERT_EQ(c.holes[0].missing_corners.size(), 2u);
+  run_expecting_present(c, harness::OracleOptions{}, 1.0);
 }
 
 // Where the corner graph's sub-holes cannot be stitched (a turbine corner hole, measured:
