@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -55,17 +56,61 @@ struct TrueFeatures {
   std::vector<std::array<int, 2>> corner_links;
 };
 
-TrueFeatures true_features(const HoleTruth& truth, double tolerance, bool corner_graph) {
+// The polylines of `edges` that run from boundary to boundary (neither end `at_corner`), cut
+// where one turns by more than `bend_angle_degrees` at an inner point (a bend, appended to
+// `bends`); unchanged where the angle is 180 or more. An edge that ends at a missing corner is
+// left whole: a bend beside the corner would take the edge from the corner's lines.
+std::vector<std::vector<Point>> cut_at_bends(const std::vector<std::vector<Point>>& edges,
+                                             double bend_angle_degrees,
+                                             const std::function<bool(const Point&)>& at_corner,
+                                             std::vector<Point>& bends) {
+  std::vector<std::vector<Point>> pieces;
+  for (const auto& polyline : edges) {
+    if (polyline.empty() || at_corner(polyline.front()) || at_corner(polyline.back())) {
+      pieces.push_back(polyline);
+      continue;
+    }
+    std::vector<Point> piece;
+    for (std::size_t k = 0; k < polyline.size(); ++k) {
+      piece.push_back(polyline[k]);
+      if (k == 0 || k + 1 == polyline.size())
+        continue;
+      const Point in = polyline[k] - polyline[k - 1], out = polyline[k + 1] - polyline[k];
+      const double c = OpenMesh::dot(in, out) / (in.norm() * out.norm());
+      if (!(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI > bend_angle_degrees))
+        continue;
+      bends.push_back(polyline[k]);
+      pieces.push_back(std::move(piece));
+      piece = {polyline[k]};
+    }
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+TrueFeatures true_features(const HoleTruth& truth, double tolerance, const OracleOptions& options) {
+  const bool corner_graph = options.corner_graph;
   auto same = [&](const Point& a, const Point& b) { return (a - b).norm() <= tolerance; };
+  // The missing corners, then (with the corner graph) the bends of the missing edges: the
+  // user draws a bent edge as two feature lines that meet at the bend.
+  std::vector<Point> corner_points = truth.missing_corners;
+  auto at_missing_corner = [&](const Point& p) {
+    return std::any_of(truth.missing_corners.begin(), truth.missing_corners.end(),
+                       [&](const Point& c) { return same(p, c); });
+  };
+  const std::vector<std::vector<Point>> edges =
+      corner_graph ? cut_at_bends(truth.missing_edges, options.bend_angle_degrees,
+                                  at_missing_corner, corner_points)
+                   : truth.missing_edges;
   auto at_corner = [&](const Point& p) -> int {
-    for (std::size_t i = 0; i < truth.missing_corners.size(); ++i) {
-      if (same(p, truth.missing_corners[i]))
+    for (std::size_t i = 0; i < corner_points.size(); ++i) {
+      if (same(p, corner_points[i]))
         return static_cast<int>(i);
     }
     return -1;
   };
   std::vector<std::array<Point, 2>> ends;
-  for (const auto& polyline : truth.missing_edges) {
+  for (const auto& polyline : edges) {
     if (polyline.size() >= 2)
       ends.push_back({polyline.front(), polyline.back()});
   }
@@ -87,7 +132,7 @@ TrueFeatures true_features(const HoleTruth& truth, double tolerance, bool corner
     }
   }
   TrueFeatures result;
-  std::vector<std::vector<int>> corner_ends(truth.missing_corners.size());
+  std::vector<std::vector<int>> corner_ends(corner_points.size());
   std::vector<std::array<int, 2>> between_corners;
   for (const auto& e : ends) {
     const int c0 = at_corner(e[0]), c1 = at_corner(e[1]);
@@ -159,8 +204,7 @@ FeaturePointProposal OracleUser::review_feature_points(const FeaturePointProposa
         (proposal.boundary[i] - proposal.boundary[(i + 1) % proposal.boundary.size()]).norm();
   }
   mean_edge /= static_cast<double>(proposal.boundary.size());
-  const TrueFeatures truth =
-      true_features(case_.holes[hole], 1e-9 * (1.0 + mean_edge), options_.corner_graph);
+  const TrueFeatures truth = true_features(case_.holes[hole], 1e-9 * (1.0 + mean_edge), options_);
 
   // The true points as the user would click them: on the proposed boundary.
   std::vector<int> truth_vertex;

@@ -22,7 +22,9 @@ namespace holebench::harness {
 /// at its missing corner. A proposed point within three mean boundary edge lengths of a true
 /// one (greedy, nearest first) is matched to it. One intervention each: a matched point
 /// moved to another boundary vertex, a proposed point removed, a true point added, a pair
-/// made or undone, the corner triple named, changed or cleared.
+/// made or undone, the corner triple named, changed or cleared. With the corner graph
+/// (OracleOptions), a missing edge that bends sharply inside the hole is two edges meeting at
+/// a corner of the graph.
 ///
 /// Crest lines (3.4.2, the paper's figures 2 and 9c): at a feature point within
 /// `crest_match_edges` mean boundary edge lengths of a missing sharp edge's end (not a missing
@@ -38,6 +40,12 @@ struct OracleOptions {
   /// corners, two corners joined by an edge) and draws the edges between such corners
   /// (FeaturePointProposal::more_corners, corner_links). False: the paper's user step only.
   bool corner_graph = true;
+  /// With the corner graph: a missing edge from boundary to boundary that turns by more than
+  /// this angle at a point inside the hole (a bend, no missing corner) is drawn as two feature
+  /// lines meeting at the bend, a corner of the graph reached by two lines; the paper's
+  /// Catmull-Rom spline (eq. 3) cannot bend there. The fandisk's two-crease hole has one
+  /// (about 100 degrees).
+  double bend_angle_degrees = 45.0;
 };
 
 class OracleUser final : public User {

@@ -1,6 +1,8 @@
 // The crest_feature method's CGAL translation unit for jet fitting and ridges.
 #include "methods/crest_feature/crest_lines.h"
 
+#include "methods/crest_feature/sharp_creases.h"
+
 // CGAL's graph traits for OpenMesh must come before any CGAL algorithm header.
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 namespace holebench::crest_feature {
@@ -293,6 +296,15 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
     }
     delete line;
   }
+  // Sharp creases (sharp_creases.h): the crease itself is the crest line, and the fitted
+  // ridges beside it are dropped.
+  std::vector<CrestLine> creases =
+      trace_sharp_creases(mesh, in_band, result.mean_edge_length, options);
+  drop_crest_points_near(result.lines, creases,
+                         options.sharp_crease_clearance_edges * result.mean_edge_length,
+                         options.min_segments);
+  result.lines.insert(result.lines.end(), std::make_move_iterator(creases.begin()),
+                      std::make_move_iterator(creases.end()));
   return result;
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/mesh.h"
 
+#include <array>
 #include <vector>
 
 namespace holebench::crest_feature {
@@ -25,6 +26,15 @@ struct CrestLineOptions {
   /// Curvatures are fitted and crest lines traced only within this many rings of a boundary
   /// vertex (the holes); 0: over the whole mesh.
   int band_rings = 12;
+  /// Sharp creases (not in the paper; sharp_creases.h): edges whose dihedral angle exceeds
+  /// this (degrees; the project's sharp-edge threshold, core/region_segmentation.h) make
+  /// crest lines of their own; 180: none.
+  double sharp_crease_angle_degrees = 30.0;
+  /// A sharp crease's chain ends where it turns by more than this at a vertex (degrees).
+  double sharp_crease_bend_degrees = 45.0;
+  /// Jet-fitted crest points within this many mean edge lengths of a sharp crease are
+  /// dropped: the fitted ridges that run beside the crease.
+  double sharp_crease_clearance_edges = 2.0;
 };
 
 enum class CrestType { Ridge, Ravine };
@@ -33,6 +43,9 @@ struct CrestLine {
   CrestType type = CrestType::Ridge;
   std::vector<Point> points;    ///< crest points, in order along the line (on mesh edges)
   double mean_curvature = 0.0;  ///< mean |k| along the line (strength / length)
+  /// Per end (front, back): whether the line runs out there, so that it may be extrapolated
+  /// to a hole's boundary (3.4.1). A sharp crease's end at a corner or a bend does not.
+  std::array<bool, 2> runs_out = {true, true};
 };
 
 struct CrestLines {

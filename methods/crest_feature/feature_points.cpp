@@ -146,6 +146,29 @@ Point run_out_direction(const std::vector<Point>& near, const Point& end, double
   return OpenMesh::dot(t, end - mean) < 0 ? -t : t;
 }
 
+// Where the hole's boundary runs along the line (e, t) from loop vertex `index` on (a crease
+// whose first edges the hole's boundary follows), the last vertex on it: the line enters the
+// hole there. A neighbour is on the line where it lies ahead, within `fraction` of its
+// boundary edge's length of the line.
+int last_vertex_along(const Mesh& mesh, const Hole& hole, int index, const Point& e, const Point& t,
+                      double fraction) {
+  const int n = static_cast<int>(hole.vertices.size());
+  auto ahead_on_line = [&](int from, int to) {
+    const Point p = mesh.point(hole.vertices[from]), q = mesh.point(hole.vertices[to]);
+    const Point d = q - e;
+    const double s = OpenMesh::dot(d, t);
+    return s > OpenMesh::dot(p - e, t) && (d - t * s).norm() <= fraction * (q - p).norm();
+  };
+  for (int step : {1, n - 1}) {
+    if (!ahead_on_line(index, (index + step) % n))
+      continue;
+    for (int walked = 0; walked < n && ahead_on_line(index, (index + step) % n); ++walked)
+      index = (index + step) % n;
+    break;
+  }
+  return index;
+}
+
 }  // namespace
 
 Point estimate_tangent(const Mesh& mesh, const Hole& hole, const CrestLines& crest, int loop_index,
@@ -196,6 +219,8 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
     if (points.size() < 2)
       continue;
     for (int end = 0; end < 2; ++end) {
+      if (!crest.lines[l].runs_out[end])
+        continue;
       const Point e = end == 0 ? points.front() : points.back();
       // Quick reject: the end is not near this hole.
       if ((e - hole.centroid).norm() > hole.radius + reach)
@@ -214,22 +239,27 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
                                 c->edge_parameter});
         continue;
       }
-      // The boundary vertex the extrapolated line passes nearest, ahead of the end.
+      // The boundary vertex the extrapolated line passes nearest, ahead of the end; of
+      // equally near ones the first along the line (a straight crease's ray passes through
+      // both of its ends on a small hole).
       int best = -1;
-      double best_distance = options.ray_tolerance_edges * a;
+      double best_distance = options.ray_tolerance_edges * a, best_s = 0.0;
+      const double tie = 1e-9 * a;
       for (std::size_t i = 0; i < hole.vertices.size(); ++i) {
         const Point d = mesh.point(hole.vertices[i]) - e;
         const double s = OpenMesh::dot(d, tangent);
         if (s < -a || s > reach)
           continue;
         const double off = (d - tangent * std::max(s, 0.0)).norm();
-        if (off < best_distance) {
+        if (off < best_distance - tie || (best >= 0 && off <= best_distance + tie && s < best_s)) {
           best_distance = off;
+          best_s = s;
           best = static_cast<int>(i);
         }
       }
       if (best < 0)
         continue;
+      best = last_vertex_along(mesh, hole, best, e, tangent, options.edge_snap_fraction);
       // The tangent into the hole is the line's direction as it runs out.
       candidates.push_back({best, tangent, static_cast<int>(l), weight,
                             mesh.point(hole.vertices[best]), std::nullopt});

@@ -45,7 +45,10 @@ struct FeaturePointOptions {
   /// 12 face pairs; docs/crest_feature.md).
   bool on_boundary_edges = false;
   /// A crossing within this fraction of the edge's length from one of its vertices is that
-  /// vertex (no sliver triangles).
+  /// vertex (no sliver triangles). Also: where the hole's boundary runs along a crest line's
+  /// ray (each next boundary vertex ahead and within this fraction of its edge's length of
+  /// the ray), the feature point is the last vertex of that run, where the line enters the
+  /// hole (a crease whose first edges the hole's boundary follows).
   double edge_snap_fraction = 0.2;
 };
 
