@@ -2,22 +2,17 @@
 // failed write leaves the old one and no temporary file, with an error naming the file.
 #include "core/atomic_file.h"
 
+#include "tests/harness/text_file.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace holebench {
 namespace {
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using harness::test_support::read_text;
 
 std::filesystem::path fresh_dir() {
   const auto dir = std::filesystem::temp_directory_path() / "holebench_atomic_file_test";

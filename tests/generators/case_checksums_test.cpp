@@ -10,6 +10,7 @@
 #include "core/mesh_io.h"
 #include "generators/case_catalog.h"
 #include "generators/random.h"
+#include "tests/harness/text_file.h"
 
 #include <gtest/gtest.h>
 
@@ -30,10 +31,7 @@ const std::filesystem::path kStored =
 std::uint64_t mesh_checksum(const Mesh& mesh) {
   const auto path = std::filesystem::temp_directory_path() / "holebench_case_checksum.ply";
   write_mesh(mesh, path);
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return stable_hash(bytes.str());
+  return stable_hash(harness::test_support::read_text(path));
 }
 
 std::string hex(std::uint64_t value) {

@@ -26,39 +26,14 @@ rm -rf "$work"
 mkdir -p "$work/tmp"
 export TMPDIR="$work/tmp"  # the jobs' temporary folders stay on a disk with room
 
-cat > "$work/part.json" << 'JSON'
-{
-  "name": "disk_full_part",
-  "description": "disk-full test: a part of the smoke suite",
-  "cases": ["box/edge", "box/corner", "brep/k1/inner/small", "brep/k1/outer/outer/small"],
-  "methods": ["liepa_cgal", "cgal_triangulate"],
-  "noise_percent": [0, 5],
-  "include_cad": false,
-  "timeout_s": 120
-}
-JSON
+# shellcheck source=smoke_part.sh
+source "$(dirname "$0")/smoke_part.sh"
+write_smoke_part "$work/part.json" disk_full_part "disk-full test: a part of the smoke suite"
 run_args=(run --suite "$work/part.json" --no-snapshots --no-viewer-meshes --workers 2)
 
 fail() {
   echo "disk_full_test: $*" >&2
   exit 1
-}
-
-# Records equal up to timings (as in kill_resume_test.sh).
-same_records() {
-  python3 - "$1" "$2" << 'PY'
-import json, sys
-def records(path):
-    out = []
-    for r in json.load(open(path))["results"]:
-        for key in ("stages_s", "phases_s", "method_seconds", "method_run_seconds"):
-            r.pop(key, None)
-        r.get("metrics", {}).pop("time_method_s", None)
-        out.append(r)
-    return out
-if records(sys.argv[1]) != records(sys.argv[2]):
-    sys.exit(f"{sys.argv[2]}: records differ from {sys.argv[1]}")
-PY
 }
 
 # The command failed with a one-line error naming the file and the reason, not a crash.

@@ -18,19 +18,9 @@ rm -rf "$work"
 mkdir -p "$work/tmp"
 export TMPDIR="$work/tmp"  # the jobs' temporary folders that a kill leaves stay in here
 
-# The part of the smoke suite: its options, its quicker cases, two methods, two noise levels
-# (16 jobs, about 8 s on 2 busy cores).
-cat > "$work/part.json" <<'JSON'
-{
-  "name": "smoke_part",
-  "description": "kill-and-resume test: a part of the smoke suite",
-  "cases": ["box/edge", "box/corner", "brep/k1/inner/small", "brep/k1/outer/outer/small"],
-  "methods": ["liepa_cgal", "cgal_triangulate"],
-  "noise_percent": [0, 5],
-  "include_cad": false,
-  "timeout_s": 120
-}
-JSON
+# shellcheck source=smoke_part.sh
+source "$(dirname "$0")/smoke_part.sh"
+write_smoke_part "$work/part.json" smoke_part "kill-and-resume test: a part of the smoke suite"
 # Its sharded part for merge --shards: 4 jobs in 2 shards.
 cat > "$work/shards.json" <<'JSON'
 {
@@ -44,36 +34,6 @@ cat > "$work/shards.json" <<'JSON'
 }
 JSON
 run_args=(run --suite "$work/part.json" --no-snapshots --workers 2)
-
-# Records equal up to timings: every record's fields but its times, in order.
-same_records() {
-  python3 - "$1" "$2" <<'PY'
-import json, sys
-def records(path):
-    out = []
-    for r in json.load(open(path))["results"]:
-        for key in ("stages_s", "phases_s", "method_seconds", "method_run_seconds"):
-            r.pop(key, None)
-        r.get("metrics", {}).pop("time_method_s", None)
-        out.append(r)
-    return out
-a, b = records(sys.argv[1]), records(sys.argv[2])
-if a != b:
-    ids_a = [r["job_id"] for r in a]
-    ids_b = [r["job_id"] for r in b]
-    print(f"records differ: {len(a)} vs {len(b)} records", file=sys.stderr)
-    for x, y in zip(a, b):
-        if x != y:
-            print("first difference:", x["job_id"], file=sys.stderr)
-            for k in sorted(set(x) | set(y)):
-                if x.get(k) != y.get(k):
-                    print(f"  {k}: {x.get(k)!r:.200} != {y.get(k)!r:.200}", file=sys.stderr)
-            break
-    if ids_a != ids_b:
-        print("job ids differ", file=sys.stderr)
-    sys.exit(1)
-PY
-}
 
 # Kills a process started with setsid (its group) and every job process it started (each
 # leads its own group), all with SIGKILL, the runner first.
