@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/method_result.h"
+#include "methods/method_options.h"
 #include "methods/user.h"
 
 #include <memory>
@@ -25,6 +26,9 @@ class Method {
   virtual std::string id() const = 0;
   /// One line for `holebench list`.
   virtual std::string description() const = 0;
+  /// Every setting the method runs with (methods/method_options.h); records carry them as
+  /// "method_options".
+  virtual MethodOptions options() const = 0;
   /// Fills the holes of `holed`. May throw; the harness records the exception.
   virtual MethodResult run(const Mesh& holed, const MethodParameters& parameters,
                            User& user) const = 0;

@@ -29,13 +29,19 @@ std::vector<std::unique_ptr<Method>> make_methods_run_by_name() {
   return methods;
 }
 
-std::unique_ptr<Method> make_method(const std::string& id) {
+std::unique_ptr<Method> find_method(const std::string& id) {
   for (auto* list : {make_all_methods, make_methods_run_by_name}) {
     for (auto& method : list()) {
       if (method->id() == id)
         return std::move(method);
     }
   }
+  return nullptr;
+}
+
+std::unique_ptr<Method> make_method(const std::string& id) {
+  if (auto method = find_method(id))
+    return method;
   throw std::invalid_argument("unknown method '" + id + "' (see `holebench list`)");
 }
 

@@ -16,6 +16,9 @@ std::vector<std::unique_ptr<Method>> make_all_methods();
 /// brep_guidance_segmented (brep_guidance segmenting even inputs that carry B-Rep faces).
 std::vector<std::unique_ptr<Method>> make_methods_run_by_name();
 
+/// The method `id` (of either list) with its options, or nullptr for an unknown id.
+std::unique_ptr<Method> find_method(const std::string& id);
+
 /// The method `id` (of either list) with its options; throws std::invalid_argument for an
 /// unknown id.
 std::unique_ptr<Method> make_method(const std::string& id);

@@ -7,6 +7,7 @@
 #include "metrics/face_subset.h"
 #include "metrics/feature_recovery.h"
 #include "metrics/hole_matching.h"
+#include "metrics/metric_names.h"
 #include "metrics/surface_distance.h"
 #include "metrics/validity.h"
 
@@ -25,6 +26,8 @@ const MetricValue* Evaluation::find(const std::string& name) const {
 
 namespace {
 
+using namespace metric_names;
+
 class Recorder {
  public:
   explicit Recorder(std::vector<MetricValue>& values) : values_(values) {}
@@ -42,13 +45,12 @@ double fraction(std::size_t part, std::size_t whole) {
   return static_cast<double>(part) / static_cast<double>(whole);
 }
 
-// A distance with its interval: `<stem>_rel_diag` and, where the search gives one,
-// `<stem>_lower_rel_diag` / `<stem>_upper_rel_diag`.
-void add_interval(Recorder& out, const std::string& stem, const DistanceInterval& d,
+// A distance with its interval: the value and, where the search gives them, its bounds.
+void add_interval(Recorder& out, const IntervalNames& names, const DistanceInterval& d,
                   double diagonal) {
-  out.add(stem + "_rel_diag", d.value / diagonal);
-  out.add(stem + "_lower_rel_diag", d.lower / diagonal);
-  out.add(stem + "_upper_rel_diag", d.upper / diagonal);
+  out.add(names.value, d.value / diagonal);
+  out.add(names.lower, d.lower / diagonal);
+  out.add(names.upper, d.upper / diagonal);
 }
 
 void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
@@ -64,10 +66,10 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   const SurfaceDistance d =
       surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole);
   const DistanceSummary model = d.summary();
-  out.add("hausdorff_rel_diag", model.hausdorff.lower / diagonal);
-  out.add("hausdorff_upper_rel_diag", model.hausdorff.upper / diagonal);
-  add_interval(out, "mean_distance", model.mean, diagonal);
-  add_interval(out, "rms_distance", model.rms, diagonal);
+  out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);
+  out.add(kHausdorffUpperRelDiag, model.hausdorff.upper / diagonal);
+  add_interval(out, kMeanDistance, model.mean, diagonal);
+  add_interval(out, kRmsDistance, model.rms, diagonal);
 
   // The hole region: the patch against the complete model, and the removed faces of the
   // complete model against the repaired mesh.
@@ -97,13 +99,13 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
       hole_converged = hole_converged && h.converged && m.converged;
     }
     converged = converged && hole_converged;
-    out.add_flag("hole_distance_converged_ok", hole_converged);
-    out.add("hole_hausdorff_rel_diag", hole.hausdorff.lower / diagonal);
-    out.add("hole_hausdorff_upper_rel_diag", hole.hausdorff.upper / diagonal);
-    add_interval(out, "hole_mean_distance", hole.mean, diagonal);
-    add_interval(out, "hole_rms_distance", hole.rms, diagonal);
+    out.add_flag(kHoleDistanceConvergedOk, hole_converged);
+    out.add(kHoleHausdorffRelDiag, hole.hausdorff.lower / diagonal);
+    out.add(kHoleHausdorffUpperRelDiag, hole.hausdorff.upper / diagonal);
+    add_interval(out, kHoleMeanDistance, hole.mean, diagonal);
+    add_interval(out, kHoleRmsDistance, hole.rms, diagonal);
   }
-  out.add_flag("distance_converged_ok", converged);
+  out.add_flag(kDistanceConvergedOk, converged);
 
   // The slice paper's Table 2 error: the mean distance of the new vertices from the
   // complete model (exact closest points).
@@ -116,7 +118,7 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
     ++count;
   }
   if (count > 0)
-    out.add("new_vertex_mean_error_rel_diag", sum / count / diagonal);
+    out.add(kNewVertexMeanErrorRelDiag, sum / count / diagonal);
 }
 
 void add_feature_recovery(const Case& c, const MethodResult& result,
@@ -133,8 +135,8 @@ void add_feature_recovery(const Case& c, const MethodResult& result,
       sum += e;
       largest = std::max(largest, e);
     }
-    out.add("missing_corner_error_mean_rel_diag", sum / f.corner_errors.size() / diagonal);
-    out.add("missing_corner_error_max_rel_diag", largest / diagonal);
+    out.add(kMissingCornerErrorMeanRelDiag, sum / f.corner_errors.size() / diagonal);
+    out.add(kMissingCornerErrorMaxRelDiag, largest / diagonal);
   }
   if (!f.edges.empty()) {
     std::size_t present = 0;
@@ -148,14 +150,14 @@ void add_feature_recovery(const Case& c, const MethodResult& result,
         largest = std::max(largest, *e.distance);
       }
     }
-    out.add("missing_edge_present_fraction", fraction(present, f.edges.size()));
-    out.add("missing_edge_covered_fraction", covered / f.edges.size());
+    out.add(kMissingEdgePresentFraction, fraction(present, f.edges.size()));
+    out.add(kMissingEdgeCoveredFraction, covered / f.edges.size());
     if (any_distance)
-      out.add("missing_edge_distance_max_rel_diag", largest / diagonal);
+      out.add(kMissingEdgeDistanceMaxRelDiag, largest / diagonal);
   }
   if (f.normal_deviation_mean_deg) {
-    out.add("patch_normal_deviation_mean_deg", *f.normal_deviation_mean_deg);
-    out.add("patch_normal_deviation_max_deg", *f.normal_deviation_max_deg);
+    out.add(kPatchNormalDeviationMeanDeg, *f.normal_deviation_mean_deg);
+    out.add(kPatchNormalDeviationMaxDeg, *f.normal_deviation_max_deg);
   }
 }
 
@@ -165,36 +167,36 @@ void add_validity(const Case& c, const MethodResult& result, const EvaluationOpt
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
   const Validity v = validity(c.input, result.repaired, validity_options);
-  out.add_count("open_boundary_loops_count", v.open_boundary_loops);
-  out.add_flag("is_closed", v.open_boundary_loops == 0);
-  out.add_count("non_manifold_vertices_count", v.non_manifold_vertices);
-  out.add_flag("is_manifold", v.non_manifold_vertices == 0);
-  out.add_flag("is_consistently_oriented", v.orientation_conflicts == 0);
+  out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
+  out.add_flag(kIsClosed, v.open_boundary_loops == 0);
+  out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);
+  out.add_flag(kIsManifold, v.non_manifold_vertices == 0);
+  out.add_flag(kIsConsistentlyOriented, v.orientation_conflicts == 0);
   if (v.self_intersections_tested) {
-    out.add_count("self_intersections_count", v.self_intersections);
-    out.add_count("patch_self_intersections_count", v.patch_self_intersections);
+    out.add_count(kSelfIntersectionsCount, v.self_intersections);
+    out.add_count(kPatchSelfIntersectionsCount, v.patch_self_intersections);
   }
-  out.add_count("new_faces_count", count_new_faces(result.repaired));
-  out.add_count("input_faces_count", c.input.n_faces());
-  out.add_count("new_degenerate_faces_count", v.new_degenerate_faces);
-  out.add_count("original_faces_changed_count", v.original_faces_changed);
-  out.add_flag("original_faces_unchanged_ok", v.original_faces_changed == 0);
+  out.add_count(kNewFacesCount, count_new_faces(result.repaired));
+  out.add_count(kInputFacesCount, c.input.n_faces());
+  out.add_count(kNewDegenerateFacesCount, v.new_degenerate_faces);
+  out.add_count(kOriginalFacesChangedCount, v.original_faces_changed);
+  out.add_flag(kOriginalFacesUnchangedOk, v.original_faces_changed == 0);
 }
 
 void add_classification(const Case& c, const MethodResult& result, Recorder& out) {
   const ClassificationAccuracy a = classification_accuracy(c, result);
   if (a.compared == 0)
     return;
-  out.add("classification_k_correct_fraction", fraction(a.k_correct, a.compared));
+  out.add(kClassificationKCorrectFraction, fraction(a.k_correct, a.compared));
   if (a.orientation_compared > 0)
-    out.add("classification_orientation_correct_fraction",
+    out.add(kClassificationOrientationCorrectFraction,
             fraction(a.orientation_correct, a.orientation_compared));
-  out.add("classification_convexity_correct_fraction", fraction(a.convexity_correct, a.compared));
+  out.add(kClassificationConvexityCorrectFraction, fraction(a.convexity_correct, a.compared));
   if (a.boundary_kind_compared > 0)
-    out.add("classification_boundary_kind_correct_fraction",
+    out.add(kClassificationBoundaryKindCorrectFraction,
             fraction(a.boundary_kind_correct, a.boundary_kind_compared));
-  out.add("classification_decision_correct_fraction", fraction(a.decision_correct, a.compared));
-  out.add("classification_all_correct_fraction", fraction(a.all_correct, a.compared));
+  out.add(kClassificationDecisionCorrectFraction, fraction(a.decision_correct, a.compared));
+  out.add(kClassificationAllCorrectFraction, fraction(a.all_correct, a.compared));
 }
 
 void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptions& options,
@@ -232,15 +234,15 @@ void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptio
     error += q.direction_error_deg;
   }
   if (undefined > 0)
-    out.add_count("arrows_undefined_count", undefined);
+    out.add_count(kArrowsUndefinedCount, undefined);
   if (arrows == 0)
     return;
-  out.add_count("arrows_count", arrows);
-  out.add_flag("arrow_position_outside_ok", outside == arrows);
-  out.add_flag("arrow_shaft_free_ok", shaft_free == arrows);
-  out.add("arrow_visible_fraction", visible / arrows);
-  out.add("arrow_best_visible_fraction", best / arrows);
-  out.add("arrow_direction_error_deg", error / arrows);
+  out.add_count(kArrowsCount, arrows);
+  out.add_flag(kArrowPositionOutsideOk, outside == arrows);
+  out.add_flag(kArrowShaftFreeOk, shaft_free == arrows);
+  out.add(kArrowVisibleFraction, visible / arrows);
+  out.add(kArrowBestVisibleFraction, best / arrows);
+  out.add(kArrowDirectionErrorDeg, error / arrows);
 }
 
 // The share of the reported holes that a stand-in handled instead of the method's own path
@@ -250,7 +252,7 @@ void add_fallbacks(const MethodResult& result, Recorder& out) {
     return;
   const auto fallbacks = std::count_if(result.holes.begin(), result.holes.end(),
                                        [](const HoleReport& h) { return !h.fallback.empty(); });
-  out.add("fallback_holes_fraction",
+  out.add(kFallbackHolesFraction,
           fraction(static_cast<std::size_t>(fallbacks), result.holes.size()));
 }
 

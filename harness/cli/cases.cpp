@@ -6,6 +6,7 @@
 #include "harness/cli/subcommands.h"
 #include "harness/outputs/case_export.h"
 #include "harness/outputs/case_gallery.h"
+#include "harness/outputs/file_names.h"
 #include "harness/run/case_selection.h"
 
 #include <fmt/format.h>
@@ -54,7 +55,7 @@ int cases_export(const CaseCatalog& catalog, const std::vector<std::string>& pat
       select_cases(catalog, patterns.empty() ? std::vector<std::string>{"*"} : patterns);
   for (std::size_t i = 0; i < selected.size(); ++i) {
     const auto c = catalog.make(selected[i].id, seed, noise);
-    export_case(c, dir / case_folder_name(c.id));
+    export_case(c, dir / file_stem_of_id(c.id));
     std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, selected.size(), c.id.c_str());
   }
   print_skipped_models(catalog);

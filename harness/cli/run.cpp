@@ -5,7 +5,7 @@
 #include "harness/outputs/run_summary_table.h"
 #include "harness/run/memory_limit.h"
 #include "harness/run/resolve_run_options.h"
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 #include "methods/external/external_method_spec.h"
 
 #include <fmt/format.h>

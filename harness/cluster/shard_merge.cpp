@@ -3,7 +3,7 @@
 #include "harness/results/merge_results.h"
 #include "harness/results/results_file.h"
 #include "harness/run/output_folder_lock.h"
-#include "harness/run/runner.h"
+#include "harness/run/process_pool.h"
 
 #include <map>
 #include <set>

@@ -5,7 +5,7 @@
 #include "harness/cluster/shard.h"
 #include "harness/cluster/shard_manifest.h"
 #include "harness/cluster/shard_status.h"
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 #include "harness/run/suite.h"
 
 #include <fmt/format.h>
@@ -77,7 +77,8 @@ std::filesystem::path suite_file_of(const std::string& suite) {
 }
 
 std::vector<std::string> plan_job_ids(const Suite& suite) {
-  const RunOptions run_options = run_options_from_suite(suite);
+  RunOptions run_options;
+  run_options.suite = suite;
   const generators::CaseCatalog catalog(run_catalog_options(run_options));
   std::vector<std::string> ids;
   for (const auto& job : plan_jobs(run_options, catalog))

@@ -11,18 +11,6 @@
 
 namespace holebench::harness {
 
-std::string case_folder_name(const std::string& id) {
-  std::string name;
-  for (char c : id) {
-    if (c == '/') {
-      name += "__";
-    } else {
-      name += c;
-    }
-  }
-  return name;
-}
-
 void export_case(const Case& c, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   WriteOptions ply;

@@ -13,7 +13,4 @@ namespace holebench::harness {
 /// labels).
 void export_case(const Case& c, const std::filesystem::path& dir);
 
-/// The folder name of a case id: '/' becomes "__".
-std::string case_folder_name(const std::string& id);
-
 }  // namespace holebench::harness

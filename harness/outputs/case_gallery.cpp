@@ -3,6 +3,7 @@
 #include "core/geometry.h"
 #include "core/labels_summary.h"
 #include "harness/outputs/case_export.h"
+#include "harness/outputs/file_names.h"
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/case_view.h"
 
@@ -22,7 +23,7 @@ std::filesystem::path write_case_gallery(const generators::CaseCatalog& catalog,
   std::string cells;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Case c = catalog.make(cases[i].id);
-    const std::string file = "gallery/" + case_folder_name(c.id) + ".png";
+    const std::string file = "gallery/" + file_stem_of_id(c.id) + ".png";
     render::SnapshotOptions snapshot;
     snapshot.width = options.width;
     snapshot.height = options.height;

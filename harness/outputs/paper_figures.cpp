@@ -5,6 +5,7 @@
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/report/summary_table.h"
 #include "methods/registry.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -48,17 +49,6 @@ std::filesystem::path figure_5(const FiguresOptions& options) {
 
 // The methods Table 2 of the slice paper compares (its columns).
 const std::vector<std::string> kTable2Methods = {"slice_loft", "slice_direct", "liepa_cgal"};
-
-double metric(const JobRecord& record, const std::string& name, bool& found) {
-  for (const auto& m : record.metrics) {
-    if (m.name == name) {
-      found = true;
-      return m.value;
-    }
-  }
-  found = false;
-  return 0.0;
-}
 
 std::string cell(const std::vector<double>& values, const char* format = "{:.3e}") {
   if (values.empty())
@@ -113,12 +103,10 @@ std::map<std::pair<std::string, double>, Table2Row> table_2_rows(const ResultsDa
     std::map<std::string, double> error;
     for (const auto& method : methods) {
       const auto it = job.by_method.find(method);
-      bool found = false;
-      const double value = it == job.by_method.end()
-                               ? 0.0
-                               : metric(*it->second, "new_vertex_mean_error_rel_diag", found);
-      if (found)
-        error[method] = value;
+      if (it == job.by_method.end())
+        continue;
+      if (const double* value = it->second->metric(metric_names::kNewVertexMeanErrorRelDiag))
+        error[method] = *value;
     }
     if (error.size() != methods.size())
       continue;  // not every method left new vertices: the hole is in no column
@@ -126,13 +114,10 @@ std::map<std::pair<std::string, double>, Table2Row> table_2_rows(const ResultsDa
     for (const auto& [method, value] : error)
       row.error[method].push_back(value);
     const JobRecord& loft = *job.by_method.at("slice_loft");
-    bool found = false;
-    const double faces = metric(loft, "new_faces_count", found);
-    if (found)
-      row.new_triangles.push_back(faces);
-    const double input = metric(loft, "input_faces_count", found);
-    if (found)
-      row.input_triangles.push_back(input);
+    if (const double* faces = loft.metric(metric_names::kNewFacesCount))
+      row.new_triangles.push_back(*faces);
+    if (const double* input = loft.metric(metric_names::kInputFacesCount))
+      row.input_triangles.push_back(*input);
   }
   return rows;
 }
@@ -205,9 +190,9 @@ std::vector<std::filesystem::path> table_2(const ResultsData& data, const Figure
 // Figures 10 and 13 of the crest-line paper: holes across 1, 2, 3 creases of the fandisk.
 std::vector<std::filesystem::path> crease_table(const ResultsData& data,
                                                 const FiguresOptions& options) {
-  const std::vector<std::string> columns = {"hausdorff_rel_diag", "hole_mean_distance_rel_diag",
-                                            "new_vertex_mean_error_rel_diag",
-                                            "missing_edge_present_fraction"};
+  const std::vector<std::string> columns = {
+      metric_names::kHausdorffRelDiag, metric_names::kHoleMeanDistanceRelDiag,
+      metric_names::kNewVertexMeanErrorRelDiag, metric_names::kMissingEdgePresentFraction};
   std::string md = "| case | method | user | noise % | status |";
   for (const auto& c : columns)
     md += " " + c + " |";
@@ -228,9 +213,8 @@ std::vector<std::filesystem::path> crease_table(const ResultsData& data,
     md += fmt::format("| {} | {} | {} | {} | {} |", r->job.case_id, r->job.method_id, r->job.user,
                       r->job.noise_percent, to_string(r->status));
     for (const auto& c : columns) {
-      bool found = false;
-      const double v = metric(*r, c, found);
-      md += found ? fmt::format(" {:.3e} |", v) : std::string(" - |");
+      const double* v = r->metric(c);
+      md += v ? fmt::format(" {:.3e} |", *v) : std::string(" - |");
     }
     md += "\n";
   }

@@ -1,4 +1,5 @@
 #include "harness/outputs/run_summary_table.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 
@@ -13,10 +14,10 @@ std::string format_run_summary(const RunSummary& summary) {
       const double* value = r.metric(name);
       return value ? fmt::format("{:.3g}", *value) : std::string("-");
     };
-    text +=
-        fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} |\n", r.job.case_id, r.job.method_id,
-                    r.job.noise_percent, to_string(r.status), metric("hausdorff_rel_diag"),
-                    metric("new_faces_count"), 1000.0 * r.method_seconds);
+    text += fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} |\n", r.job.case_id,
+                        r.job.method_id, r.job.noise_percent, to_string(r.status),
+                        metric(metric_names::kHausdorffRelDiag),
+                        metric(metric_names::kNewFacesCount), 1000.0 * r.method_seconds);
   }
   text += fmt::format("\n{} jobs, {} not ok, {:.1f} s. Results: {} and {}\n",
                       summary.records.size(), summary.failures, summary.seconds,

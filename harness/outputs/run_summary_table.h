@@ -2,7 +2,7 @@
 // the counts, the wall time and where the results are.
 #pragma once
 
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 
 #include <string>
 

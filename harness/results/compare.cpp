@@ -9,8 +9,11 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace holebench::harness {
 
@@ -132,11 +135,53 @@ std::map<std::string, const JobRecord*> by_id(const ResultsData& data) {
   return records;
 }
 
-std::map<std::string, double> metric_map(const JobRecord& record) {
-  std::map<std::string, double> values;
-  for (const auto& metric : record.metrics)
-    values[metric.name] = metric.value;
-  return values;
+std::string setting_text(const MethodOptionValue* value) {
+  if (!value)
+    return "-";
+  return std::visit(
+      [](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, bool>)
+          return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::string>)
+          return v;
+        else
+          return fmt::format("{}", v);
+      },
+      *value);
+}
+
+// The built-in method's settings that differ between two jobs, "name: old -> new"; none where
+// either job names no settings (an older record, an external method).
+std::vector<std::string> changed_settings(const Job& old_job, const Job& new_job) {
+  std::vector<std::string> changed;
+  const MethodOptions& a = old_job.method_options;
+  const MethodOptions& b = new_job.method_options;
+  if (a.empty() || b.empty())
+    return changed;
+  for (const auto& option : a.values()) {
+    const MethodOptionValue* other = b.find(option.name);
+    if (!other || *other != option.value)
+      changed.push_back(fmt::format("{}: {} -> {}", option.name, setting_text(&option.value),
+                                    setting_text(other)));
+  }
+  for (const auto& option : b.values()) {
+    if (!a.find(option.name))
+      changed.push_back(fmt::format("{}: - -> {}", option.name, setting_text(&option.value)));
+  }
+  return changed;
+}
+
+// The names of the metrics of either record, sorted, each once.
+std::vector<std::string> metric_names_of(const JobRecord& a, const JobRecord& b) {
+  std::vector<std::string> names;
+  for (const auto* record : {&a, &b}) {
+    for (const auto& metric : record->metrics)
+      names.push_back(metric.name);
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
 }
 
 }  // namespace
@@ -190,28 +235,20 @@ Comparison compare_results(const ResultsData& base, const ResultsData& now,
                    : !old_record ? JobPresence::New
                                  : JobPresence::Both;
     if (job.presence == JobPresence::Both) {
-      const auto old_values = metric_map(*old_record);
-      const auto new_values = metric_map(*new_record);
-      std::vector<std::string> names;
-      for (const auto& [name, value] : old_values)
-        names.push_back(name);
-      for (const auto& [name, value] : new_values)
-        names.push_back(name);
-      std::sort(names.begin(), names.end());
-      names.erase(std::unique(names.begin(), names.end()), names.end());
-      for (const auto& name : names) {
-        const auto o = old_values.find(name);
-        const auto n = new_values.find(name);
-        if (o != old_values.end() && n != new_values.end()) {
-          job.metrics.push_back(judge(name, o->second, n->second, tolerances));
+      job.changed_settings = changed_settings(old_record->job, new_record->job);
+      for (const auto& name : metric_names_of(*old_record, *new_record)) {
+        const double* o = old_record->metric(name);
+        const double* n = new_record->metric(name);
+        if (o && n) {
+          job.metrics.push_back(judge(name, *o, *n, tolerances));
         } else {
           MetricChange m;
           m.metric = name;
-          if (o != old_values.end())
-            m.old_value = o->second;
-          if (n != new_values.end())
-            m.new_value = n->second;
-          m.verdict = o != old_values.end() ? MetricVerdict::Disappeared : MetricVerdict::Appeared;
+          if (o)
+            m.old_value = *o;
+          if (n)
+            m.new_value = *n;
+          m.verdict = o ? MetricVerdict::Disappeared : MetricVerdict::Appeared;
           job.metrics.push_back(std::move(m));
         }
       }
@@ -324,14 +361,45 @@ std::vector<Row> comparison_rows(const Comparison& comparison) {
 
 }  // namespace
 
+namespace {
+
+// Which methods ran with other settings, and which settings: one line per method, with the
+// number of jobs; empty when none did.
+std::string settings_paragraph(const Comparison& comparison) {
+  std::map<std::string, std::pair<std::size_t, std::set<std::string>>> by_method;
+  for (const auto& job : comparison.jobs) {
+    if (job.changed_settings.empty())
+      continue;
+    auto& [jobs, settings] = by_method[job.method];
+    ++jobs;
+    settings.insert(job.changed_settings.begin(), job.changed_settings.end());
+  }
+  if (by_method.empty())
+    return "";
+  std::string out = "Method settings differ (the same jobs ran with other settings; not judged):\n";
+  for (const auto& [method, entry] : by_method) {
+    out += fmt::format("- {} ({} jobs): ", method, entry.first);
+    std::string list;
+    for (const auto& setting : entry.second)
+      list += (list.empty() ? "" : "; ") + setting;
+    out += list + "\n";
+  }
+  return out + "\n";
+}
+
+}  // namespace
+
 std::string format_comparison(const Comparison& comparison) {
   std::string out;
   out += fmt::format("Comparing {} (new) against {} (baseline)\n\n",
                      comparison.new_label.empty() ? "?" : comparison.new_label,
                      comparison.base_label.empty() ? "?" : comparison.base_label);
   const auto rows = comparison_rows(comparison);
-  if (rows.empty()) {
+  const std::string settings = settings_paragraph(comparison);
+  if (rows.empty() && settings.empty()) {
     out += "No changes.\n\n";
+  } else if (rows.empty()) {
+    out += "No metric or status changes.\n\n";
   } else {
     out += "| verdict | job | metric | old | new | change | relative | allowed |\n";
     out += "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
@@ -342,6 +410,7 @@ std::string format_comparison(const Comparison& comparison) {
     }
     out += "\n";
   }
+  out += settings;
 
   std::size_t compared = 0, missing = 0, added = 0, status_regressions = 0;
   std::size_t metric_regressions = 0, improvements = 0, within = 0;

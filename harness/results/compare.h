@@ -61,6 +61,10 @@ struct JobComparison {
   std::optional<JobStatus> new_status;  ///< absent for a missing job
   /// Metrics present on either side, sorted by name (empty unless presence == Both).
   std::vector<MetricChange> metrics;
+  /// The method's settings that differ, "name: old -> new" (a setting only one side has:
+  /// "-" on the other), where both records name their settings (`method_options`; records
+  /// written before them have none). Not judged: the same job run with other settings.
+  std::vector<std::string> changed_settings;
 
   bool status_changed() const { return old_status && new_status && *old_status != *new_status; }
   /// The status went from ok to anything else.

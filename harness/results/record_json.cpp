@@ -6,12 +6,15 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <variant>
 
 namespace holebench::harness {
 namespace {
 
 constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
 constexpr std::int64_t kSizeMax = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kInt64Max = std::numeric_limits<std::int64_t>::max();
 
 // [x, y, z]; anything else (written by an older version) is the origin.
 Point point_from(const nlohmann::json& j, const std::string& name) {
@@ -42,6 +45,33 @@ double number_or_null(const nlohmann::json& j, const std::string& parent, const 
   if (it != j.end() && it->is_number_float() && !std::isfinite(it->get<double>()))
     return fallback;
   return number_field(j, parent, key, fallback);
+}
+
+nlohmann::ordered_json method_options_to_json(const MethodOptions& options) {
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
+  for (const auto& option : options.values())
+    std::visit([&](const auto& value) { object[option.name] = value; }, option.value);
+  return object;
+}
+
+// A built-in method's settings: an object of flags, integers, finite numbers and names.
+MethodOptions method_options_from_json(const nlohmann::json& object, const std::string& name) {
+  if (!object.is_object())
+    throw std::invalid_argument("field \"" + name + "\": expected an object, got " +
+                                quote_json(object));
+  MethodOptions options;
+  for (const auto& [key, value] : object.items()) {
+    const std::string field = field_name(name, key);
+    if (value.is_boolean())
+      options.add(key, value.get<bool>());
+    else if (value.is_number_integer())
+      options.add(key, as_integer(value, field, kInt64Min, kInt64Max));
+    else if (value.is_number_float())
+      options.add(key, as_number(value, field));
+    else
+      options.add(key, as_string(value, field));
+  }
+  return options;
 }
 
 HoleRecord hole_from_json(const nlohmann::json& h, const std::string& name) {
@@ -189,6 +219,8 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
     if (record.job.external->vertex_tolerance_rel_diag > 0.0)
       options["vertex_tolerance_rel_diag"] = record.job.external->vertex_tolerance_rel_diag;
     j["method_options"] = options;
+  } else if (!record.job.method_options.empty()) {
+    j["method_options"] = method_options_to_json(record.job.method_options);
   }
   j["case_family"] = record.case_family;
   j["case_kind"] = record.case_kind;
@@ -259,6 +291,8 @@ JobRecord record_from_json(const nlohmann::json& j) {
     spec.vertex_tolerance_rel_diag =
         number_field(j["method_options"], "method_options", "vertex_tolerance_rel_diag", 0.0);
     record.job.external = spec;
+  } else if (j.contains("method_options")) {
+    record.job.method_options = method_options_from_json(j["method_options"], "method_options");
   }
   record.job.noise_percent = number_field(j, "", "noise_percent", 0.0);
   record.job.user = string_field(j, "", "user", "no_user");

@@ -3,7 +3,7 @@
 // ones (results written by an older holebench still read).
 #pragma once
 
-#include "harness/results/results_file.h"
+#include "harness/results/run_context.h"
 #include "harness/run/job.h"
 
 #include <nlohmann/json.hpp>

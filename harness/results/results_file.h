@@ -2,6 +2,7 @@
 // written as JSON (numbers as numbers) and as long-format CSV (one row per metric).
 #pragma once
 
+#include "harness/results/run_context.h"
 #include "harness/run/job.h"
 
 #include <filesystem>
@@ -9,24 +10,6 @@
 #include <vector>
 
 namespace holebench::harness {
-
-/// Version of the results file layout; readers ignore fields they do not know.
-inline constexpr int kResultsSchemaVersion = 1;
-
-struct RunContext {
-  int schema_version = kResultsSchemaVersion;
-  std::string code_version;  ///< git describe of the source tree
-  std::string build_type;
-  std::string host;
-  std::string created_utc;  ///< ISO 8601
-  std::string suite;
-  std::string
-      shard;  ///< "I/N" for one shard of a sharded run (harness/cluster/shard.h), else empty
-  std::vector<std::pair<std::string, std::string>> libraries;  ///< name, version
-};
-
-/// The context of this process: code version, build type, library versions, host, time.
-RunContext current_context(const std::string& suite);
 
 /// Writes `dir/results.json`.
 void write_results_json(const std::filesystem::path& path, const RunContext& context,

@@ -3,6 +3,7 @@
 #include "harness/results/record_json.h"
 #include "harness/results/results_file.h"
 #include "harness/results/results_reader.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -16,6 +17,21 @@
 
 namespace holebench::harness {
 namespace {
+
+// A built-in method's settings (flags, numbers, names) or an external method's command.
+bool method_options_are_valid(const nlohmann::json& options) {
+  if (!options.is_object())
+    return false;
+  if (const auto command = options.find("command"); command != options.end()) {
+    const auto tolerance = options.find("vertex_tolerance_rel_diag");
+    return command->is_string() && (tolerance == options.end() || tolerance->is_number());
+  }
+  for (const auto& [key, value] : options.items()) {
+    if (!value.is_boolean() && !value.is_number() && !value.is_string())
+      return false;
+  }
+  return true;
+}
 
 using Report = std::function<void(const char* check, std::string message)>;
 
@@ -124,8 +140,8 @@ void check_distance_order(const std::map<std::string, double>& metrics,
   const double slack = options.cross_metric_relative_slack;
   for (const std::string prefix : {"", "hole_"}) {
     std::vector<std::string> chain;
-    for (const char* name :
-         {"mean_distance_rel_diag", "rms_distance_rel_diag", "hausdorff_upper_rel_diag"}) {
+    for (const char* name : {metric_names::kMeanDistanceRelDiag, metric_names::kRmsDistanceRelDiag,
+                             metric_names::kHausdorffUpperRelDiag}) {
       if (metrics.count(prefix + name))
         chain.push_back(prefix + name);
     }
@@ -137,8 +153,8 @@ void check_distance_order(const std::map<std::string, double>& metrics,
       }
     }
   }
-  const auto error = metrics.find("new_vertex_mean_error_rel_diag");
-  const auto hausdorff = metrics.find("hole_hausdorff_upper_rel_diag");
+  const auto error = metrics.find(metric_names::kNewVertexMeanErrorRelDiag);
+  const auto hausdorff = metrics.find(metric_names::kHoleHausdorffUpperRelDiag);
   if (error != metrics.end() && hausdorff != metrics.end() &&
       !at_most(error->second, hausdorff->second, slack)) {
     report("new_vertex_error", named(error->first, error->second) + " > " +
@@ -199,17 +215,14 @@ bool check_fields(const nlohmann::json& j, std::set<std::string>& unusable, cons
         report("finite", name + " is not a number: " + value.dump());
     }
   }
-  // An external method's record names its command: {"command": "...", optionally
-  // "vertex_tolerance_rel_diag": number}.
+  // The method's settings: a built-in's, an object of flags, numbers and names; an external
+  // method's, its command {"command": "...", optionally "vertex_tolerance_rel_diag": number}.
   if (const auto options = j.find("method_options"); options != j.end()) {
-    const auto command = options->is_object() ? options->find("command") : options->end();
-    const auto tolerance =
-        options->is_object() ? options->find("vertex_tolerance_rel_diag") : options->end();
-    if (!options->is_object() || command == options->end() || !command->is_string() ||
-        (tolerance != options->end() && !tolerance->is_number())) {
+    if (!method_options_are_valid(*options)) {
       report("field_type",
-             "\"method_options\" is not an object with a string \"command\" "
-             "(and a number \"vertex_tolerance_rel_diag\" if any): " +
+             "\"method_options\" is neither an object of flags, numbers and names nor an "
+             "external method's (a string \"command\", and a number "
+             "\"vertex_tolerance_rel_diag\" if any): " +
                  options->dump());
       complete = false;
     }

@@ -4,6 +4,7 @@
 #include "core/geometry.h"
 #include "core/stopwatch.h"
 #include "generators/case_catalog.h"
+#include "harness/outputs/file_names.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/image.h"
 #include "harness/outputs/viewer/viewer_mesh.h"
@@ -12,6 +13,7 @@
 #include "methods/common/cgal_random.h"
 #include "methods/external/external_method.h"
 #include "methods/registry.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 
@@ -23,22 +25,6 @@
 namespace holebench::harness {
 
 namespace {
-
-void copy_holes(const MethodResult& result, JobRecord& record) {
-  for (const auto& hole : result.holes) {
-    HoleRecord h;
-    h.hole_index = hole.hole_index;
-    h.loop_size = hole.loop_size;
-    h.closed = hole.closed;
-    h.new_faces = hole.new_faces;
-    h.note = hole.note;
-    h.fallback = hole.fallback;
-    h.centroid = hole.centroid;
-    h.arrow = hole.arrow;
-    h.classification = hole.classification;
-    record.holes.push_back(std::move(h));
-  }
-}
 
 using Clock = std::chrono::steady_clock;
 
@@ -93,7 +79,7 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     record.user_interventions = user->interventions();
     record.user_interventions_by_kind = user->interventions_by_kind();
     record.phases = result.phases;
-    copy_holes(result, record);
+    record.holes = result.holes;
     record.message = result.message;
     if (result.status == MethodStatus::Failed) {
       // An external program that ran out of memory under the job's limit says so.
@@ -105,14 +91,9 @@ JobRecord run_job(const Job& job, const JobOptions& options) {
     const auto evaluation_start = Clock::now();
     record.metrics = evaluate(c, result, options.evaluation).values;
     record.stages.push_back({"evaluation", seconds_since(evaluation_start)});
-    record.metrics.push_back({"time_method_s", record.method_seconds});
+    record.metrics.push_back({metric_names::kTimeMethodS, record.method_seconds});
     if (!options.snapshot_dir.empty()) {
-      std::string name = job.id();
-      for (char& ch : name) {
-        if (ch == '/' || ch == '|')
-          ch = '_';
-      }
-      const auto path = options.snapshot_dir / (name + ".png");
+      const auto path = options.snapshot_dir / (file_stem_of_id(job.id()) + ".png");
       const auto snapshot_start = Clock::now();
       render::write_png(render::job_picture(c, result), path);
       if (!options.viewer_mesh_dir.empty())

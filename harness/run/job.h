@@ -25,6 +25,9 @@ struct Job {
   /// Set when the method is an external program (`method_id` is its name): the command the
   /// job runs, which its record names ("method_options").
   std::optional<ExternalMethodSpec> external;
+  /// A built-in method's settings (Method::options, set when the run is planned), which its
+  /// record names ("method_options"); empty for an external method (see `external`).
+  MethodOptions method_options{};
 
   /// Stable key used to match records across runs: "case_id|method_id|user|noise|seed".
   std::string id() const;
@@ -46,17 +49,10 @@ enum class JobStatus {
 };
 const char* to_string(JobStatus status);
 
-struct HoleRecord {
-  int hole_index = 0;
-  std::size_t loop_size = 0;
-  bool closed = false;
-  std::size_t new_faces = 0;
-  std::string note;
-  std::string fallback;  ///< HoleReport::fallback: "" or what stood in for the method's path
-  Point centroid{0, 0, 0};
-  std::optional<GuidanceArrow> arrow;        ///< the method's guidance arrow, if any
-  std::optional<HoleLabels> classification;  ///< the method's classification, if any
-};
+/// A record's holes are the method's own hole reports (core/method_result.h). The results
+/// files keep every field but `new_vertices` and `seconds` (harness/results/record_json.h),
+/// so a record read back has those two at zero.
+using HoleRecord = HoleReport;
 
 struct JobRecord {
   Job job;

@@ -5,7 +5,7 @@
 
 #include "core/occt/brep_mesh.h"
 #include "harness/cluster/shard.h"
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 #include "harness/run/suite.h"
 #include "methods/external/external_method_spec.h"
 
@@ -50,13 +50,12 @@ struct RunFlags {
 Suite suite_of_run_flags(const RunFlags& flags,
                          const std::filesystem::path& suites_dir = default_suites_dir());
 
-/// The run options of `suite` (run_options_from_suite) with every flag given in `flags`
-/// overriding its field: cases, methods, noise levels, seeds, users, the Hausdorff error
-/// bound, the timeout, the memory limit, the method repetitions; --no-cad leaves the CAD
-/// models out even where the suite includes them; --external methods run after the suite's.
-/// The suite's meshes unless --mesh is given (a missing one is an InvalidInputError naming
-/// the suite and the field). The rest (output folder, B-Rep tessellation, snapshots, workers,
-/// resume, shard) comes from `flags` alone.
+/// The run options of `suite` with every flag given in `flags` overriding the suite's field: cases,
+/// methods, noise levels, seeds, users, the Hausdorff error bound, the timeout, the memory limit,
+/// the method repetitions; --no-cad leaves the CAD models out even where the suite includes them;
+/// --external methods run after the suite's. The suite's meshes unless --mesh is given (a missing
+/// one is an InvalidInputError naming the suite and the field). The rest (output folder, B-Rep
+/// tessellation, snapshots, workers, resume, shard) comes from `flags` alone.
 RunOptions resolve_run_options(const Suite& suite, const RunFlags& flags);
 
 }  // namespace holebench::harness

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "harness/results/json_fields.h"
 #include "methods/external/predefined_external_methods.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 
@@ -35,7 +36,8 @@ bool higher_is_better_metric(const std::string& metric) {
 }
 
 bool informational_metric(const std::string& metric) {
-  return metric == "input_faces_count" || metric == "new_faces_count" || metric == "arrows_count";
+  return metric == metric_names::kInputFacesCount || metric == metric_names::kNewFacesCount ||
+         metric == metric_names::kArrowsCount;
 }
 
 std::optional<MetricTolerance> Tolerances::find(const std::string& metric) const {
@@ -248,6 +250,12 @@ std::vector<std::string> list_suites(const std::filesystem::path& suites_dir) {
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+Suite ad_hoc_suite() {
+  Suite suite;
+  suite.name = "ad hoc";
+  return suite;
 }
 
 }  // namespace holebench::harness

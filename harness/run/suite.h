@@ -7,6 +7,7 @@
 #include "harness/run/memory_limit.h"
 #include "methods/external/external_method_spec.h"
 #include "metrics/evaluation.h"
+#include "metrics/metric_names.h"
 
 #include <filesystem>
 #include <map>
@@ -27,7 +28,7 @@ struct Tolerances {
   MetricTolerance default_tolerance;
   std::map<std::string, MetricTolerance> metrics;  ///< by metric name; others use the default
   /// Metrics never judged (timings vary from machine to machine).
-  std::vector<std::string> ignored{"time_method_s"};
+  std::vector<std::string> ignored{metric_names::kTimeMethodS};
 
   /// How `metric` is judged: its own entry if listed; nothing (not judged) if ignored or
   /// if it only describes the case or the answer's size (`informational_metric`);
@@ -72,6 +73,11 @@ struct Suite {
   EvaluationOptions evaluation;
   Tolerances tolerances;
 };
+
+/// The suite of a run that names no suite, only cases: the built-in defaults of `Suite`
+/// (every built-in method, no_user, noise 0, seed 0, CAD models included, 300 s, 4 GiB) named
+/// "ad hoc", with no case patterns (the run's cases then default to default_case_patterns()).
+Suite ad_hoc_suite();
 
 /// The folder holding the suite files: $HOLEBENCH_SUITES_DIR if set, else the source tree's
 /// suites/ (compiled in).

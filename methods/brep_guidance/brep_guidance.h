@@ -57,6 +57,7 @@ class BrepGuidanceMethod final : public Method {
     return "B-Rep paper: hole classification, exact closing of small inner holes (k <= 3), "
            "guidance arrows for the rest";
   }
+  MethodOptions options() const override;
   MethodResult run(const Mesh& holed, const MethodParameters& parameters,
                    User& user) const override {
     return run_brep_guidance(holed, parameters, user, options_);

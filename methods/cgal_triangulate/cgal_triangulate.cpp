@@ -13,4 +13,11 @@ MethodResult fill_holes_cgal_triangulate(const Mesh& holed, const CgalTriangulat
   return fill_holes_cgal(holed, cgal);
 }
 
+MethodOptions CgalTriangulateMethod::options() const {
+  return MethodOptions()
+      .add("use_delaunay_triangulation", options_.use_delaunay_triangulation)
+      .add("use_2d_constrained_delaunay_triangulation",
+           options_.use_2d_constrained_delaunay_triangulation);
+}
+
 }  // namespace holebench

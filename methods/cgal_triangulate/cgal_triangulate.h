@@ -30,6 +30,7 @@ class CgalTriangulateMethod final : public Method {
   std::string description() const override {
     return "baseline: CGAL triangulate_hole alone (no refinement, no fairing), no feature handling";
   }
+  MethodOptions options() const override;
   MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
     return fill_holes_cgal_triangulate(holed, options_);
   }

@@ -37,6 +37,7 @@ class CrestFeatureMethod final : public Method {
     return "crest-line paper: crest lines, feature points paired by the user, Catmull-Rom "
            "feature lines, sub-holes filled by projected constrained Delaunay triangulation";
   }
+  MethodOptions options() const override;
   MethodResult run(const Mesh& holed, const MethodParameters&, User& user) const override {
     return run_crest_feature(holed, user, options_);
   }

@@ -20,6 +20,11 @@ class ExternalMethod final : public Method {
   explicit ExternalMethod(ExternalMethodSpec spec) : spec_(std::move(spec)) {}
   std::string id() const override { return spec_.name; }
   std::string description() const override { return "external: " + spec_.command; }
+  MethodOptions options() const override {
+    return MethodOptions()
+        .add("command", spec_.command)
+        .add("vertex_tolerance_rel_diag", spec_.vertex_tolerance_rel_diag);
+  }
   MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
     return run_external_method(holed, spec_);
   }

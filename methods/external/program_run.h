@@ -1,5 +1,5 @@
 // Runs a shell command as a child process and reports how it ended. Used by external
-// methods; the job's own process isolation and timeout (harness/run/runner.h) stay in
+// methods; the job's own process isolation and timeout (harness/run/process_pool.h) stay in
 // charge: the command runs in the job's process group, so a job stopped at its time limit
 // takes the command and its children with it, and it dies with the job's process.
 #pragma once

@@ -15,4 +15,12 @@ MethodResult fill_holes_liepa_cgal(const Mesh& holed, const LiepaCgalOptions& op
   return fill_holes_cgal(holed, cgal);
 }
 
+MethodOptions LiepaCgalMethod::options() const {
+  return MethodOptions()
+      .add("refine", options_.refine)
+      .add("fair", options_.fair)
+      .add("density_control_factor", options_.density_control_factor)
+      .add("fairing_continuity", options_.fairing_continuity);
+}
+
 }  // namespace holebench

@@ -29,6 +29,7 @@ class LiepaCgalMethod final : public Method {
   std::string description() const override {
     return "baseline: CGAL triangulate_refine_and_fair_hole (Liepa 2003), no feature handling";
   }
+  MethodOptions options() const override;
   MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
     return fill_holes_liepa_cgal(holed, options_);
   }

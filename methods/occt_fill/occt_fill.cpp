@@ -521,4 +521,17 @@ MethodResult fill_holes_occt_plate(const Mesh& holed, const OcctFillOptions& opt
   return result;
 }
 
+MethodOptions OcctFillMethod::options() const {
+  return MethodOptions()
+      .add("max_constraints", options_.max_constraints)
+      .add("tangent_constraints", options_.tangent_constraints)
+      .add("fitted_normals", options_.fitted_normals)
+      .add("normal_fit_max_angle", options_.normal_fit_max_angle)
+      .add("degree", options_.degree)
+      .add("iterations", options_.iterations)
+      .add("interior_spacing_edges", options_.interior_spacing_edges)
+      .add("max_chord_split_rounds", options_.max_chord_split_rounds)
+      .add("attach_islands", options_.attach_islands);
+}
+
 }  // namespace holebench

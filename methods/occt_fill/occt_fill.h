@@ -49,6 +49,7 @@ class OcctFillMethod final : public Method {
     return "baseline: OpenCASCADE N-sided plate filling (GeomPlate, G0 + G1 along the hole), "
            "no feature handling";
   }
+  MethodOptions options() const override;
   MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
     return fill_holes_occt_plate(holed, options_);
   }

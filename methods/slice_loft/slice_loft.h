@@ -54,6 +54,7 @@ class SliceLoftMethod final : public Method {
                : "slice paper: segmented boundary, missing edges and corner traced with "
                  "curvature continuity, slice sections lofted, trimmed and faceted";
   }
+  MethodOptions options() const override;
   MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
     return run_slice_loft(holed, options_);
   }

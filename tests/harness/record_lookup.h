@@ -24,7 +24,10 @@ double value_named(const std::vector<Entry>& entries, Key Entry::*key, Value Ent
 }
 
 inline double metric(const JobRecord& record, const std::string& name) {
-  return value_named(record.metrics, &MetricValue::name, &MetricValue::value, name, record);
+  if (const double* value = record.metric(name))
+    return *value;
+  ADD_FAILURE() << "no " << name << " in " << record.job.id();
+  return -1.0;
 }
 
 inline double stage(const JobRecord& record, const std::string& name) {

@@ -1,5 +1,6 @@
 // The walking skeleton end to end: cases -> liepa_cgal -> metrics -> results and PNGs.
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
+#include "methods/registry.h"
 #include "tests/harness/record_lookup.h"
 
 #include <gtest/gtest.h>
@@ -22,10 +23,10 @@ using test_support::metric;
 TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
   RunOptions options;
   options.out_dir = fresh_dir("skeleton");
-  options.case_patterns = {"box/*"};
-  options.method_ids = {"liepa_cgal"};
-  options.catalog.include_cad = false;
-  options.runner.progress = false;
+  options.suite.case_patterns = {"box/*"};
+  options.suite.methods = {"liepa_cgal"};
+  options.suite.include_cad = false;
+  options.progress = false;
   const RunSummary summary = run_jobs(options);
   ASSERT_EQ(summary.records.size(), 3u);
   EXPECT_EQ(summary.failures, 0u);
@@ -78,11 +79,11 @@ TEST(SkeletonEndToEnd, RunsEveryCaseAndWritesResultsAndSnapshots) {
 
 TEST(SkeletonEndToEnd, SameInputsGiveTheSameRecords) {
   RunOptions options;
-  options.case_patterns = {"box/corner"};
-  options.method_ids = {"liepa_cgal"};
-  options.catalog.include_cad = false;
+  options.suite.case_patterns = {"box/corner"};
+  options.suite.methods = {"liepa_cgal"};
+  options.suite.include_cad = false;
   options.snapshots = false;
-  options.runner.progress = false;
+  options.progress = false;
   options.out_dir = fresh_dir("repeat_a");
   const auto first = run_jobs(options);
   options.out_dir = fresh_dir("repeat_b");
@@ -98,13 +99,27 @@ TEST(SkeletonEndToEnd, SameInputsGiveTheSameRecords) {
 TEST(SkeletonEndToEnd, UnknownCaseOrMethodIsRejectedBeforeRunning) {
   RunOptions options;
   options.out_dir = fresh_dir("unknown");
-  options.catalog.include_cad = false;
-  const generators::CaseCatalog catalog(options.catalog);
-  options.case_patterns = {"no/such/case"};
+  options.suite.include_cad = false;
+  const generators::CaseCatalog catalog(run_catalog_options(options));
+  options.suite.case_patterns = {"no/such/case"};
   EXPECT_THROW(plan_jobs(options, catalog), std::invalid_argument);
-  options.case_patterns = {"box/*"};
-  options.method_ids = {"no_such_method"};
+  options.suite.case_patterns = {"box/*"};
+  options.suite.methods = {"no_such_method"};
   EXPECT_THROW(plan_jobs(options, catalog), std::invalid_argument);
+}
+
+// Each planned job carries its method's settings, which its record names.
+TEST(SkeletonEndToEnd, PlannedJobsCarryTheirMethodsSettings) {
+  RunOptions options;
+  options.suite.include_cad = false;
+  options.suite.case_patterns = {"box/corner"};
+  options.suite.methods = {"slice_loft", "slice_direct"};
+  const generators::CaseCatalog catalog(run_catalog_options(options));
+  const std::vector<Job> jobs = plan_jobs(options, catalog);
+  ASSERT_EQ(jobs.size(), 2u);
+  EXPECT_EQ(jobs[0].method_options, make_method("slice_loft")->options());
+  EXPECT_EQ(jobs[1].method_options, make_method("slice_direct")->options());
+  EXPECT_NE(jobs[0].method_options, jobs[1].method_options);
 }
 
 TEST(RunJob, AnUnknownCaseBecomesAnInvalidInputRecordNotACrash) {

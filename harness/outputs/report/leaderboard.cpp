@@ -1,6 +1,7 @@
 #include "harness/outputs/report/leaderboard.h"
 
 #include "harness/outputs/report/summary_table.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 
@@ -81,9 +82,9 @@ LeaderboardEntry make_entry(const std::string& method, const Records& records) {
   entry.values = {
       share(entry.successes, entry.jobs),
       share(entry.fallback_holes, entry.holes),
-      median_of_metric(records, "hole_hausdorff_rel_diag"),
-      median_of_metric(records, "new_vertex_mean_error_rel_diag"),
-      mean_of_metric(records, "missing_edge_covered_fraction"),
+      median_of_metric(records, metric_names::kHoleHausdorffRelDiag),
+      median_of_metric(records, metric_names::kNewVertexMeanErrorRelDiag),
+      mean_of_metric(records, metric_names::kMissingEdgeCoveredFraction),
       times.empty() ? std::nullopt : std::optional<double>(median_of(times)),
   };
   return entry;

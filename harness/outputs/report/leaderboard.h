@@ -9,6 +9,7 @@
 
 #include "core/statistics.h"
 #include "harness/results/results_reader.h"
+#include "metrics/metric_names.h"
 
 #include <cstddef>
 #include <optional>
@@ -22,7 +23,7 @@ struct LeaderboardOptions {
   /// [<stem>_lower_rel_diag, <stem>_upper_rel_diag] where the record has those bounds,
   /// otherwise the value itself on that side (the hole Hausdorff distance is a lower bound:
   /// its interval is [hole_hausdorff_rel_diag, hole_hausdorff_upper_rel_diag]).
-  std::string paired_metric = "hole_hausdorff_rel_diag";
+  std::string paired_metric = metric_names::kHoleHausdorffRelDiag;
   /// A pair's verdict names the better method when the p-value is below this.
   double significance = 0.05;
   SignedRankOptions test;  ///< exact p-values up to test.max_exact_n pairs

@@ -4,6 +4,7 @@
 
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/report/leaderboard.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -97,7 +98,8 @@ nlohmann::ordered_json plot_data(const ResultsData& data) {
   j["noise_percent"] = noise_levels;
 
   auto& error = j["error_vs_noise"] = nlohmann::ordered_json::object();
-  for (const char* metric : {"hausdorff_rel_diag", "hole_mean_distance_rel_diag"}) {
+  for (const char* metric :
+       {metric_names::kHausdorffRelDiag, metric_names::kHoleMeanDistanceRelDiag}) {
     auto& per_method = error[metric] = nlohmann::ordered_json::object();
     for (const auto& method : methods) {
       auto& medians = per_method[method] = nlohmann::ordered_json::array();
@@ -130,13 +132,13 @@ nlohmann::ordered_json plot_data(const ResultsData& data) {
     }
   }
 
-  auto& times = j["time_method_s"] = nlohmann::ordered_json::object();
+  auto& times = j[metric_names::kTimeMethodS] = nlohmann::ordered_json::object();
   for (const auto& method : methods) {
     std::vector<double> values;
     for (const auto& r : data.records) {
       if (r.job.method_id != method)
         continue;
-      if (const double* v = r.metric("time_method_s"))
+      if (const double* v = r.metric(metric_names::kTimeMethodS))
         values.push_back(*v);
     }
     std::sort(values.begin(), values.end());
@@ -328,7 +330,7 @@ std::string snapshot_grid(const ResultsData& data) {
         }
         const JobRecord& r = *it->second;
         std::string caption = to_string(r.status);
-        if (const double* h = r.metric("hausdorff_rel_diag")) {
+        if (const double* h = r.metric(metric_names::kHausdorffRelDiag)) {
           caption += fmt::format(", Hausdorff {:.3g}", *h);
         }
         if (r.snapshot.empty()) {

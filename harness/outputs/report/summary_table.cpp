@@ -1,6 +1,7 @@
 #include "harness/outputs/report/summary_table.h"
 
 #include "core/statistics.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 
@@ -13,8 +14,9 @@ namespace holebench::harness::report {
 
 const std::vector<std::string>& summary_metrics() {
   static const std::vector<std::string> metrics{
-      "hausdorff_rel_diag", "hole_mean_distance_rel_diag", "new_vertex_mean_error_rel_diag",
-      "classification_all_correct_fraction", "time_method_s"};
+      metric_names::kHausdorffRelDiag, metric_names::kHoleMeanDistanceRelDiag,
+      metric_names::kNewVertexMeanErrorRelDiag, metric_names::kClassificationAllCorrectFraction,
+      metric_names::kTimeMethodS};
   return metrics;
 }
 

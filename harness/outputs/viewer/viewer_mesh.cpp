@@ -1,5 +1,7 @@
 #include "harness/outputs/viewer/viewer_mesh.h"
 
+#include "harness/outputs/file_names.h"
+
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "harness/outputs/render/close_up.h"
@@ -22,16 +24,9 @@
 namespace holebench::viewer {
 namespace {
 
-std::string file_stem(std::string text) {
-  for (char& ch : text) {
-    if (ch == '/' || ch == '|')
-      ch = '_';
-  }
-  return text;
-}
-
 std::string case_variant(const harness::Job& job) {
-  return file_stem(fmt::format("{}|{}|{}", job.case_id, job.noise_percent, job.seed));
+  return harness::file_stem_of_id(
+      fmt::format("{}|{}|{}", job.case_id, job.noise_percent, job.seed));
 }
 
 /// What the PLY holds, before it is written.
@@ -164,7 +159,7 @@ std::string holed_mesh_file(const harness::Job& job) {
 }
 
 std::string repaired_mesh_file(const harness::Job& job) {
-  return "meshes/" + file_stem(job.id()) + ".repaired.ply";
+  return "meshes/" + harness::file_stem_of_id(job.id()) + ".repaired.ply";
 }
 
 void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path,

@@ -3,7 +3,7 @@
 #include "harness/cluster/shard.h"
 
 #include "harness/results/results_reader.h"
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 #include "harness/run/suite.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,8 @@ namespace holebench::harness {
 namespace {
 
 std::vector<Job> smoke_plan() {
-  const RunOptions options = run_options_from_suite(load_suite("smoke"));
+  RunOptions options;
+  options.suite = load_suite("smoke");
   const generators::CaseCatalog catalog(run_catalog_options(options));
   return plan_jobs(options, catalog);
 }
@@ -101,12 +102,12 @@ TEST(Shard, RunWritesOnlyItsShardAndNamesItInTheContext) {
   RunOptions options;
   options.out_dir = std::filesystem::temp_directory_path() / "holebench_shard_run";
   std::filesystem::remove_all(options.out_dir);
-  options.case_patterns = {"box/*"};
-  options.method_ids = {"liepa_cgal"};
-  options.noise_levels = {0.0, 5.0};
-  options.catalog.include_cad = false;
+  options.suite.case_patterns = {"box/*"};
+  options.suite.methods = {"liepa_cgal"};
+  options.suite.noise_levels = {0.0, 5.0};
+  options.suite.include_cad = false;
   options.snapshots = false;
-  options.runner.progress = false;
+  options.progress = false;
   options.shard = {1, 4};
   const generators::CaseCatalog catalog(run_catalog_options(options));
   const auto expected = jobs_of_shard(plan_jobs(options, catalog), options.shard);

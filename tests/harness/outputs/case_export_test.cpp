@@ -1,4 +1,5 @@
 #include "harness/outputs/case_export.h"
+#include "harness/outputs/file_names.h"
 
 #include "core/mesh_io.h"
 #include "generators/case_catalog.h"
@@ -15,10 +16,12 @@ namespace {
 TEST(CaseExport, WritesMeshesAndGroundTruthThatReadBack) {
   const Case c = generators::make_case("box/corner", 2, 5.0);
   const auto dir =
-      std::filesystem::temp_directory_path() / "holebench_export_test" / case_folder_name(c.id);
+      std::filesystem::temp_directory_path() / "holebench_export_test" / file_stem_of_id(c.id);
   std::filesystem::remove_all(dir);
   export_case(c, dir);
-  EXPECT_EQ(case_folder_name("box/corner"), "box__corner");
+  EXPECT_EQ(file_stem_of_id("box/corner"), "box_corner");
+  EXPECT_EQ(file_stem_of_id("box/corner|liepa_cgal|no_user|0|0"),
+            "box_corner_liepa_cgal_no_user_0_0");
 
   const Mesh input = read_mesh(dir / "input.ply");
   ASSERT_EQ(input.n_vertices(), c.input.n_vertices());

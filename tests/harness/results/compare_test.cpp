@@ -224,6 +224,30 @@ TEST(Compare, SameResultsHaveNoChanges) {
   EXPECT_NE(format_comparison(c).find("No changes."), std::string::npos);
 }
 
+// A job that ran with other settings says so, by method and setting, without being judged;
+// a record without settings (written before records named them) says nothing.
+TEST(Compare, ChangedMethodSettingsAreListedNotJudged) {
+  ResultsData base = fixture("base.json");
+  ResultsData now = base;
+  ASSERT_FALSE(base.records.empty());
+  base.records[0].job.method_options.add("tessellation.direct", false).add("slices", 10);
+  now.records[0].job.method_options.add("tessellation.direct", true).add("slices", 10);
+  const auto c = compare_results(base, now, smoke_tolerances());
+  EXPECT_FALSE(c.has_regression());
+  EXPECT_EQ(job(c, base.records[0].job.id()).changed_settings,
+            std::vector<std::string>{"tessellation.direct: false -> true"});
+  const auto text = format_comparison(c);
+  EXPECT_NE(text.find("Method settings differ"), std::string::npos) << text;
+  EXPECT_NE(text.find("(1 jobs): tessellation.direct: false -> true"), std::string::npos) << text;
+  EXPECT_EQ(text.find("No changes."), std::string::npos) << text;
+  EXPECT_NE(text.find(": OK\n"), std::string::npos) << text;
+
+  now.records[0].job.method_options = MethodOptions();
+  const auto older = compare_results(base, now, smoke_tolerances());
+  EXPECT_TRUE(job(older, base.records[0].job.id()).changed_settings.empty());
+  EXPECT_NE(format_comparison(older).find("No changes."), std::string::npos);
+}
+
 TEST(Compare, TableListsRegressionsFirstAndEndsWithASummaryLine) {
   const auto c =
       compare_results(fixture("base.json"), fixture("new_regressed.json"), smoke_tolerances());

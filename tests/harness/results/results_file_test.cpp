@@ -17,7 +17,12 @@ JobRecord sample_record() {
   record.status = JobStatus::Partial;
   record.message = "1 of 2 holes left open, \"quoted\"";
   record.metrics = {{"hausdorff_rel_diag", 0.046358123456789012}, {"new_faces_count", 92}};
-  record.holes = {{0, 24, true, 92, ""}};
+  HoleRecord hole;
+  hole.hole_index = 0;
+  hole.loop_size = 24;
+  hole.closed = true;
+  hole.new_faces = 92;
+  record.holes = {hole};
   return record;
 }
 

@@ -69,11 +69,12 @@ TEST(ValidateResults, FindsMissingRequiredFields) {
                     {"\"case_id\" is missing", "\"metrics\" is missing"});
 }
 
-// An external method's record names its command in a "method_options" object; a record whose
-// method_options is not such an object is reported (the first record is well formed).
+// A built-in method's record names its settings in a "method_options" object of flags,
+// numbers and names (clean.json's first record), an external method's its command; a record
+// whose method_options is neither is reported (field_type.json's first record is well formed).
 TEST(ValidateResults, FindsMethodOptionsThatAreNotAnObjectWithACommand) {
   expect_violations("field_type.json", {{"box/edge|fan_fill|no_user|0|0", "field_type"}},
-                    {"\"method_options\" is not an object"});
+                    {"\"method_options\" is neither an object of flags, numbers and names"});
 }
 
 TEST(ValidateResults, FindsAnUnknownStatus) {

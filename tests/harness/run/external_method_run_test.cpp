@@ -5,7 +5,7 @@
 #include "harness/results/record_json.h"
 #include "harness/results/results_reader.h"
 #include "harness/results/validate_results.h"
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 #include "harness/run/suite.h"
 #include "tests/harness/record_lookup.h"
 
@@ -32,13 +32,13 @@ const std::string kFanFill =
 RunOptions fan_fill_run(const std::string& folder) {
   RunOptions options;
   options.out_dir = fresh_dir(folder);
-  options.case_patterns = {"box/face_interior", "box/corner"};
-  options.method_ids = {"fan_fill"};
-  options.external_methods = {{"fan_fill", kFanFill, 0.0, {}}};
-  options.catalog.include_cad = false;
+  options.suite.case_patterns = {"box/face_interior", "box/corner"};
+  options.suite.methods = {"fan_fill"};
+  options.suite.external_methods = {{"fan_fill", kFanFill, 0.0, {}}};
+  options.suite.include_cad = false;
   options.snapshots = false;
-  options.runner.progress = false;
-  options.runner.workers = 1;
+  options.progress = false;
+  options.workers = 1;
   return options;
 }
 
@@ -71,16 +71,16 @@ TEST(ExternalMethodRun, TheFanFillExampleRunsEndToEnd) {
 // A program past the job's time limit is stopped with its job (the job's process group).
 TEST(ExternalMethodRun, AProgramPastTheTimeLimitIsStoppedWithItsJob) {
   RunOptions options = fan_fill_run("external_timeout");
-  options.case_patterns = {"box/corner"};
+  options.suite.case_patterns = {"box/corner"};
   const auto pid_file = options.out_dir.parent_path() / "holebench_test_external_timeout.pid";
   const auto dir_file = options.out_dir.parent_path() / "holebench_test_external_timeout.dir";
   std::filesystem::remove(pid_file);
-  options.external_methods = {{"fan_fill",
-                               "dirname {input} > '" + dir_file.string() + "'; echo $$ > '" +
-                                   pid_file.string() + "'; exec sleep 60; : {output}",
-                               0.0,
-                               {}}};
-  options.runner.timeout_seconds = 2.0;
+  options.suite.external_methods = {{"fan_fill",
+                                     "dirname {input} > '" + dir_file.string() + "'; echo $$ > '" +
+                                         pid_file.string() + "'; exec sleep 60; : {output}",
+                                     0.0,
+                                     {}}};
+  options.suite.timeout_seconds = 2.0;
   const RunSummary summary = run_jobs(options);
   ASSERT_EQ(summary.records.size(), 1u);
   EXPECT_EQ(summary.records[0].status, JobStatus::Timeout);
@@ -112,32 +112,32 @@ TEST(ExternalMethodRun, AProgramPastTheTimeLimitIsStoppedWithItsJob) {
 
 TEST(ExternalMethodRun, ThePlanAddsExternalMethodsAndChecksTheirNames) {
   RunOptions options = fan_fill_run("external_plan");
-  options.catalog.include_cad = false;
+  options.suite.include_cad = false;
   const generators::CaseCatalog catalog(run_catalog_options(options));
   // Named alone: only it runs.
   EXPECT_EQ(plan_jobs(options, catalog).size(), 2u);
   // Not named: it runs beside the --method ids.
-  options.method_ids = {"liepa_cgal"};
+  options.suite.methods = {"liepa_cgal"};
   auto jobs = plan_jobs(options, catalog);
   ASSERT_EQ(jobs.size(), 4u);
   EXPECT_EQ(jobs[1].method_id, "fan_fill");
   EXPECT_FALSE(jobs[0].external.has_value());
   ASSERT_TRUE(jobs[1].external.has_value());
   // A predefined one by name, without a definition.
-  options.method_ids = {"meshlab_close_holes"};
-  options.external_methods.clear();
+  options.suite.methods = {"meshlab_close_holes"};
+  options.suite.external_methods.clear();
   jobs = plan_jobs(options, catalog);
   ASSERT_EQ(jobs.size(), 2u);
   ASSERT_TRUE(jobs[0].external.has_value());
   EXPECT_NE(jobs[0].external->command.find("meshlabserver"), std::string::npos);
   // Every built-in by default; predefined external methods only by name.
-  options.method_ids.clear();
+  options.suite.methods.clear();
   for (const auto& job : plan_jobs(options, catalog))
     EXPECT_FALSE(job.external.has_value()) << job.id();
   // A built-in's id, or a name defined twice, is refused.
-  options.external_methods = {{"liepa_cgal", kFanFill, 0.0, {}}};
+  options.suite.external_methods = {{"liepa_cgal", kFanFill, 0.0, {}}};
   EXPECT_THROW(plan_jobs(options, catalog), std::invalid_argument);
-  options.external_methods = {{"a", kFanFill, 0.0, {}}, {"a", kFanFill, 0.0, {}}};
+  options.suite.external_methods = {{"a", kFanFill, 0.0, {}}, {"a", kFanFill, 0.0, {}}};
   EXPECT_THROW(plan_jobs(options, catalog), std::invalid_argument);
 }
 

@@ -5,8 +5,8 @@
 
 #include "harness/results/results_reader.h"
 #include "harness/results/validate_results.h"
-#include "harness/run/run_command.h"
-#include "harness/run/runner.h"
+#include "harness/run/process_pool.h"
+#include "harness/run/run_jobs.h"
 
 #include <gtest/gtest.h>
 
@@ -81,7 +81,7 @@ std::filesystem::path fresh_file(const std::string& name) {
 }
 
 TEST(MemoryLimit, AJobPastTheLimitIsOutOfMemoryAndTheRunGoesOn) {
-  RunnerOptions options;
+  ProcessPoolOptions options;
   options.workers = 2;
   options.progress = false;
   options.memory_limit_bytes = 2 * kGibibyte;
@@ -111,9 +111,9 @@ TEST(MemoryLimit, AnExternalProgramPastTheLimitIsOutOfMemory) {
   RunOptions options;
   options.out_dir = std::filesystem::temp_directory_path() / "holebench_test_memory_limit_run";
   std::filesystem::remove_all(options.out_dir);
-  options.case_patterns = {"box/corner"};
-  options.method_ids = {"greedy", "fan_fill"};
-  options.external_methods = {
+  options.suite.case_patterns = {"box/corner"};
+  options.suite.methods = {"greedy", "fan_fill"};
+  options.suite.external_methods = {
       {"greedy",
        "python3 -c 'blocks = [bytearray(1 << 24) for _ in iter(int, 1)]' {input} {output}",
        0.0,
@@ -122,11 +122,11 @@ TEST(MemoryLimit, AnExternalProgramPastTheLimitIsOutOfMemory) {
        "python3 '" + std::string(HOLEBENCH_SOURCE_DIR) + "/examples/fan_fill.py' {input} {output}",
        0.0,
        {}}};
-  options.catalog.include_cad = false;
+  options.suite.include_cad = false;
   options.snapshots = false;
-  options.runner.progress = false;
-  options.runner.workers = 2;
-  options.runner.memory_limit_bytes = 2 * kGibibyte;
+  options.progress = false;
+  options.workers = 2;
+  options.suite.memory_limit_bytes = 2 * kGibibyte;
   const RunSummary summary = run_jobs(options);
   ASSERT_EQ(summary.records.size(), 2u);
   EXPECT_EQ(summary.records[0].job.method_id, "greedy");

@@ -6,7 +6,7 @@
 // takes the folder at once.
 #include "harness/run/output_folder_lock.h"
 
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 
 #include <gtest/gtest.h>
 
@@ -78,9 +78,9 @@ TEST(OutputFolderLock, ASecondLockIsRefusedWithTheHoldersPid) {
     // A run into the folder is refused before it runs anything.
     RunOptions options;
     options.out_dir = dir;
-    options.case_patterns = {"box/corner"};
-    options.method_ids = {"liepa_cgal"};
-    options.catalog.include_cad = false;
+    options.suite.case_patterns = {"box/corner"};
+    options.suite.methods = {"liepa_cgal"};
+    options.suite.include_cad = false;
     EXPECT_THROW(run_jobs(options), OutputFolderInUse);
     EXPECT_FALSE(std::filesystem::exists(dir / "records.jsonl"));
   }

@@ -43,24 +43,24 @@ TEST(ResolveRunOptions, WithoutFlagsTheSuiteDecides) {
   flags.out_dir = "out";
   const RunOptions options = resolve_run_options(unusual_suite(), flags);
   EXPECT_EQ(options.out_dir, "out");
-  EXPECT_EQ(options.suite_name, "unusual");
-  EXPECT_EQ(options.case_patterns, std::vector<std::string>{"box/*"});
-  EXPECT_EQ(options.method_ids, std::vector<std::string>{"liepa_cgal"});
-  ASSERT_EQ(options.external_methods.size(), 1u);
-  EXPECT_EQ(options.external_methods[0].name, "from_suite");
-  EXPECT_EQ(options.users, std::vector<std::string>{"oracle"});
-  EXPECT_EQ(options.noise_levels, (std::vector<double>{5.0, 25.0}));
-  EXPECT_EQ(options.seeds, std::vector<std::uint64_t>{3});
-  EXPECT_FALSE(options.catalog.include_cad);
-  EXPECT_EQ(options.runner.timeout_seconds, 42.0);
-  EXPECT_EQ(options.runner.memory_limit_bytes, 123456789u);
-  EXPECT_EQ(options.method_repetitions, 3);
-  EXPECT_EQ(options.evaluation.hausdorff_error_bound_rel_diag, 2e-3);
+  EXPECT_EQ(options.suite.name, "unusual");
+  EXPECT_EQ(options.suite.case_patterns, std::vector<std::string>{"box/*"});
+  EXPECT_EQ(options.suite.methods, std::vector<std::string>{"liepa_cgal"});
+  ASSERT_EQ(options.suite.external_methods.size(), 1u);
+  EXPECT_EQ(options.suite.external_methods[0].name, "from_suite");
+  EXPECT_EQ(options.suite.users, std::vector<std::string>{"oracle"});
+  EXPECT_EQ(options.suite.noise_levels, (std::vector<double>{5.0, 25.0}));
+  EXPECT_EQ(options.suite.seeds, std::vector<std::uint64_t>{3});
+  EXPECT_FALSE(options.suite.include_cad);
+  EXPECT_EQ(options.suite.timeout_seconds, 42.0);
+  EXPECT_EQ(options.suite.memory_limit_bytes, 123456789u);
+  EXPECT_EQ(options.suite.method_repetitions, 3);
+  EXPECT_EQ(options.suite.evaluation.hausdorff_error_bound_rel_diag, 2e-3);
   // What a suite does not say: the flags' defaults.
   EXPECT_TRUE(options.snapshots);
   EXPECT_TRUE(options.viewer_meshes);
-  EXPECT_EQ(options.runner.workers, 0);
-  EXPECT_FALSE(options.runner.resume);
+  EXPECT_EQ(options.workers, 0);
+  EXPECT_FALSE(options.resume);
   EXPECT_EQ(options.shard.index, 0u);
   EXPECT_EQ(options.shard.count, 1u);
 }
@@ -85,26 +85,26 @@ TEST(ResolveRunOptions, EachFlagGivenOverridesTheSuite) {
   flags.workers = 2;
   flags.resume = true;
   const RunOptions options = resolve_run_options(unusual_suite(), flags);
-  EXPECT_EQ(options.suite_name, "unusual");
-  EXPECT_EQ(options.case_patterns, std::vector<std::string>{"brep/k3/*"});
-  EXPECT_EQ(options.method_ids, (std::vector<std::string>{"slice_loft", "crest_feature"}));
-  ASSERT_EQ(options.external_methods.size(), 2u);
-  EXPECT_EQ(options.external_methods[0].name, "from_suite");
-  EXPECT_EQ(options.external_methods[1].name, "from_flag");
-  EXPECT_EQ(options.noise_levels, std::vector<double>{0.0});
-  EXPECT_EQ(options.seeds, (std::vector<std::uint64_t>{7, 8}));
-  EXPECT_EQ(options.users, std::vector<std::string>{"no_user"});
-  EXPECT_EQ(options.evaluation.hausdorff_error_bound_rel_diag, 1e-5);
-  EXPECT_EQ(options.runner.timeout_seconds, 0.0);
-  EXPECT_EQ(options.runner.memory_limit_bytes, 0u);
-  EXPECT_EQ(options.method_repetitions, 5);
+  EXPECT_EQ(options.suite.name, "unusual");
+  EXPECT_EQ(options.suite.case_patterns, std::vector<std::string>{"brep/k3/*"});
+  EXPECT_EQ(options.suite.methods, (std::vector<std::string>{"slice_loft", "crest_feature"}));
+  ASSERT_EQ(options.suite.external_methods.size(), 2u);
+  EXPECT_EQ(options.suite.external_methods[0].name, "from_suite");
+  EXPECT_EQ(options.suite.external_methods[1].name, "from_flag");
+  EXPECT_EQ(options.suite.noise_levels, std::vector<double>{0.0});
+  EXPECT_EQ(options.suite.seeds, (std::vector<std::uint64_t>{7, 8}));
+  EXPECT_EQ(options.suite.users, std::vector<std::string>{"no_user"});
+  EXPECT_EQ(options.suite.evaluation.hausdorff_error_bound_rel_diag, 1e-5);
+  EXPECT_EQ(options.suite.timeout_seconds, 0.0);
+  EXPECT_EQ(options.suite.memory_limit_bytes, 0u);
+  EXPECT_EQ(options.suite.method_repetitions, 5);
   EXPECT_EQ(options.shard.index, 2u);
   EXPECT_EQ(options.shard.count, 4u);
-  EXPECT_EQ(options.catalog.cad_data_dir, "cad");
+  EXPECT_EQ(options.cad_data_dir, "cad");
   EXPECT_FALSE(options.snapshots);
   EXPECT_FALSE(options.viewer_meshes);
-  EXPECT_EQ(options.runner.workers, 2);
-  EXPECT_TRUE(options.runner.resume);
+  EXPECT_EQ(options.workers, 2);
+  EXPECT_TRUE(options.resume);
 }
 
 // --no-cad only ever leaves the CAD models out; without it the suite's choice stands.
@@ -112,10 +112,10 @@ TEST(ResolveRunOptions, NoCadLeavesOutButNeverBringsIn) {
   Suite with_cad = unusual_suite();
   with_cad.include_cad = true;
   RunFlags flags;
-  EXPECT_TRUE(resolve_run_options(with_cad, flags).catalog.include_cad);
-  EXPECT_FALSE(resolve_run_options(unusual_suite(), flags).catalog.include_cad);
+  EXPECT_TRUE(resolve_run_options(with_cad, flags).suite.include_cad);
+  EXPECT_FALSE(resolve_run_options(unusual_suite(), flags).suite.include_cad);
   flags.no_cad = true;
-  EXPECT_FALSE(resolve_run_options(with_cad, flags).catalog.include_cad);
+  EXPECT_FALSE(resolve_run_options(with_cad, flags).suite.include_cad);
 }
 
 // A suite may name the user's model folders ("meshes", as the kicad suite does); --mesh
@@ -125,11 +125,11 @@ TEST(ResolveRunOptions, TheSuitesMeshesUnlessMeshIsGiven) {
   std::filesystem::create_directories(dir);
   Suite suite = unusual_suite();
   suite.meshes = {dir};
-  EXPECT_EQ(resolve_run_options(suite, RunFlags{}).catalog.user_meshes,
+  EXPECT_EQ(resolve_run_options(suite, RunFlags{}).suite.meshes,
             std::vector<std::filesystem::path>{dir});
   RunFlags flags;
   flags.user_meshes = {"part.step"};
-  EXPECT_EQ(resolve_run_options(suite, flags).catalog.user_meshes,
+  EXPECT_EQ(resolve_run_options(suite, flags).suite.meshes,
             std::vector<std::filesystem::path>{"part.step"});
   suite.meshes = {dir, dir / "no_such_folder"};
   try {
@@ -151,8 +151,8 @@ TEST(ResolveRunOptions, MeshesAndTessellationComeFromTheFlags) {
   flags.user_meshes = {"part.step"};
   flags.brep_tessellation.linear_deflection_rel_diag = 0.01;
   const RunOptions options = resolve_run_options(unusual_suite(), flags);
-  EXPECT_EQ(options.catalog.user_meshes, std::vector<std::filesystem::path>{"part.step"});
-  EXPECT_EQ(options.catalog.prepare.tessellation.linear_deflection_rel_diag, 0.01);
+  EXPECT_EQ(options.suite.meshes, std::vector<std::filesystem::path>{"part.step"});
+  EXPECT_EQ(options.prepare.tessellation.linear_deflection_rel_diag, 0.01);
 }
 
 // Which suite a run starts from: --suite; else the default suite unless --case is given;
@@ -171,20 +171,20 @@ TEST(ResolveRunOptions, TheSuiteARunStartsFrom) {
   // An ad hoc run is the built-in RunOptions with the flags given.
   const RunOptions options = resolve_run_options(ad_hoc, flags);
   const RunOptions built_in;
-  EXPECT_EQ(options.suite_name, built_in.suite_name);
-  EXPECT_EQ(options.case_patterns, std::vector<std::string>{"box/*"});
-  EXPECT_EQ(options.method_ids, built_in.method_ids);
-  EXPECT_TRUE(options.external_methods.empty());
-  EXPECT_EQ(options.users, built_in.users);
-  EXPECT_EQ(options.noise_levels, built_in.noise_levels);
-  EXPECT_EQ(options.seeds, built_in.seeds);
-  EXPECT_EQ(options.catalog.include_cad, built_in.catalog.include_cad);
-  EXPECT_EQ(options.catalog.cad_data_dir, built_in.catalog.cad_data_dir);
-  EXPECT_EQ(options.runner.timeout_seconds, built_in.runner.timeout_seconds);
-  EXPECT_EQ(options.runner.memory_limit_bytes, built_in.runner.memory_limit_bytes);
-  EXPECT_EQ(options.method_repetitions, built_in.method_repetitions);
-  EXPECT_EQ(options.evaluation.hausdorff_error_bound_rel_diag,
-            built_in.evaluation.hausdorff_error_bound_rel_diag);
+  EXPECT_EQ(options.suite.name, built_in.suite.name);
+  EXPECT_EQ(options.suite.case_patterns, std::vector<std::string>{"box/*"});
+  EXPECT_EQ(options.suite.methods, built_in.suite.methods);
+  EXPECT_TRUE(options.suite.external_methods.empty());
+  EXPECT_EQ(options.suite.users, built_in.suite.users);
+  EXPECT_EQ(options.suite.noise_levels, built_in.suite.noise_levels);
+  EXPECT_EQ(options.suite.seeds, built_in.suite.seeds);
+  EXPECT_EQ(options.suite.include_cad, built_in.suite.include_cad);
+  EXPECT_EQ(options.cad_data_dir, built_in.cad_data_dir);
+  EXPECT_EQ(options.suite.timeout_seconds, built_in.suite.timeout_seconds);
+  EXPECT_EQ(options.suite.memory_limit_bytes, built_in.suite.memory_limit_bytes);
+  EXPECT_EQ(options.suite.method_repetitions, built_in.suite.method_repetitions);
+  EXPECT_EQ(options.suite.evaluation.hausdorff_error_bound_rel_diag,
+            built_in.suite.evaluation.hausdorff_error_bound_rel_diag);
 }
 
 }  // namespace

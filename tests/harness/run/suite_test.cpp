@@ -1,5 +1,5 @@
 #include "harness/run/suite.h"
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 
 #include "core/errors.h"
 
@@ -139,7 +139,9 @@ TEST(Suite, TheMemoryLimitIsReadWithItsUnitAndDefaultsToFourGibibytes) {
   EXPECT_EQ(load_suite(path.string()).memory_limit_bytes, 512ull << 20);
   std::ofstream(path) << R"({"cases": ["box/*"], "memory_limit": 0})";
   EXPECT_EQ(load_suite(path.string()).memory_limit_bytes, 0u);
-  EXPECT_EQ(run_options_from_suite(load_suite("smoke")).runner.memory_limit_bytes, 4 * kGibibyte);
+  RunOptions options;
+  options.suite = load_suite("smoke");
+  EXPECT_EQ(runner_options_of(options).memory_limit_bytes, 4 * kGibibyte);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "harness/run/runner.h"
+#include "harness/run/process_pool.h"
 
 #include "core/stopwatch.h"
 #include "harness/results/record_json.h"
@@ -230,10 +230,11 @@ class Progress {
 
 }  // namespace
 
-RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
-                          const std::filesystem::path& records_path, const RunnerOptions& options) {
+ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
+                               const std::filesystem::path& records_path,
+                               const ProcessPoolOptions& options) {
   const auto start = Clock::now();
-  RunnerResult result;
+  ProcessPoolResult result;
   std::map<std::string, JobRecord> done;
   if (options.resume) {
     for (auto& record : read_records_jsonl(records_path))

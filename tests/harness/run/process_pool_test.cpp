@@ -1,4 +1,4 @@
-#include "harness/run/runner.h"
+#include "harness/run/process_pool.h"
 
 #include <gtest/gtest.h>
 
@@ -38,8 +38,8 @@ JobRecord fake_job(const Job& job) {
   return record;
 }
 
-TEST(Runner, CrashesHangsAndEscapesBecomeStatusesAndTheRunGoesOn) {
-  RunnerOptions options;
+TEST(ProcessPool, CrashesHangsAndEscapesBecomeStatusesAndTheRunGoesOn) {
+  ProcessPoolOptions options;
   options.workers = 2;
   options.timeout_seconds = 1.0;
   options.progress = false;
@@ -62,8 +62,8 @@ TEST(Runner, CrashesHangsAndEscapesBecomeStatusesAndTheRunGoesOn) {
 
 // A job that sends no record (a crash, a timeout) still names its case's family and kind, so
 // that reports count it with its case and not in a group without a name.
-TEST(Runner, RecordsOfCrashesAndTimeoutsNameTheCaseFamily) {
-  RunnerOptions options;
+TEST(ProcessPool, RecordsOfCrashesAndTimeoutsNameTheCaseFamily) {
+  ProcessPoolOptions options;
   options.workers = 2;
   options.timeout_seconds = 1.0;
   options.progress = false;
@@ -79,9 +79,9 @@ TEST(Runner, RecordsOfCrashesAndTimeoutsNameTheCaseFamily) {
   EXPECT_EQ(result.records[1].case_kind, "kind of hang");
 }
 
-TEST(Runner, SameRecordsWhateverTheNumberOfWorkers) {
+TEST(ProcessPool, SameRecordsWhateverTheNumberOfWorkers) {
   const auto jobs = jobs_named({"a", "bb", "ccc", "dddd", "eeeee", "ffffff"});
-  RunnerOptions options;
+  ProcessPoolOptions options;
   options.progress = false;
   options.workers = 1;
   const auto one = run_isolated(jobs, fake_job, fresh_file("one.jsonl"), options);
@@ -97,16 +97,16 @@ TEST(Runner, SameRecordsWhateverTheNumberOfWorkers) {
 
 // An interrupted run: the records file holds two finished jobs and a line cut short. With
 // resume, those two are kept and only the others run.
-TEST(Runner, ResumeRunsOnlyWhatIsMissing) {
+TEST(ProcessPool, ResumeRunsOnlyWhatIsMissing) {
   const auto path = fresh_file("resume.jsonl");
   const auto jobs = jobs_named({"a", "bb", "ccc", "dddd"});
   {
-    RunnerOptions first;
+    ProcessPoolOptions first;
     first.progress = false;
     run_isolated({jobs[0], jobs[1]}, fake_job, path, first);
     std::ofstream(path, std::ios::app) << "{\"case_id\": \"ccc\", \"meth";  // cut short
   }
-  RunnerOptions options;
+  ProcessPoolOptions options;
   options.progress = false;
   options.resume = true;
   const auto result = run_isolated(jobs, fake_job, path, options);

@@ -1,7 +1,7 @@
-// The parallel job runner: every job in its own process, so that an exception, a crash or a
-// hang of a method becomes that job's status and the run goes on.
+// The process pool that runs a plan: every job in its own process, so that an exception, a crash or
+// a hang of a method becomes that job's status and the run goes on.
 //
-// Each child's address space is limited (RunnerOptions::memory_limit_bytes, RLIMIT_AS:
+// Each child's address space is limited (ProcessPoolOptions::memory_limit_bytes, RLIMIT_AS:
 // harness/run/memory_limit.h): a job that allocates past it gets the status out_of_memory
 // (std::bad_alloc caught in the child, or the child killed by a SIGKILL the runner did not
 // send: the kernel's out-of-memory killer), and the run goes on.
@@ -31,7 +31,7 @@
 
 namespace holebench::harness {
 
-struct RunnerOptions {
+struct ProcessPoolOptions {
   int workers = 0;                 ///< processes at once; 0: the number of cores
   double timeout_seconds = 300.0;  ///< per job; 0: none
   /// Address space of each job's process (RLIMIT_AS), in bytes; 0: none.
@@ -44,7 +44,7 @@ struct RunnerOptions {
   std::function<std::pair<std::string, std::string>(const std::string& case_id)> case_family_kind;
 };
 
-struct RunnerResult {
+struct ProcessPoolResult {
   std::vector<JobRecord> records;  ///< one per job, in the order of `jobs`
   std::size_t resumed = 0;         ///< records taken from an earlier run
   std::size_t failures = 0;        ///< records whose status is not ok
@@ -54,8 +54,9 @@ struct RunnerResult {
 using JobFunction = std::function<JobRecord(const Job&)>;
 
 /// Runs `jobs` with `run_one` (in child processes), appending to `records_path`.
-RunnerResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
-                          const std::filesystem::path& records_path, const RunnerOptions& options);
+ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
+                               const std::filesystem::path& records_path,
+                               const ProcessPoolOptions& options);
 
 /// The records in a records.jsonl file; lines that do not parse (a line cut short by an
 /// interruption) are skipped.

@@ -1,4 +1,4 @@
-#include "harness/run/run_command.h"
+#include "harness/run/run_jobs.h"
 
 #include "core/stopwatch.h"
 #include "generators/case_catalog.h"
@@ -22,19 +22,14 @@ namespace holebench::harness {
 namespace {
 
 bool is_builtin_method(const std::string& id) {
-  try {
-    make_method(id);
-    return true;
-  } catch (const std::invalid_argument&) {
-    return false;
-  }
+  return find_method(id) != nullptr;
 }
 
 // The external methods by name: those defined for the run, each once and none named like a
 // built-in.
 std::map<std::string, ExternalMethodSpec> defined_external_methods(const RunOptions& options) {
   std::map<std::string, ExternalMethodSpec> defined;
-  for (const auto& spec : options.external_methods) {
+  for (const auto& spec : options.suite.external_methods) {
     check_external_method_name(spec.name);
     check_command_template(spec.command);
     if (is_builtin_method(spec.name)) {
@@ -47,13 +42,17 @@ std::map<std::string, ExternalMethodSpec> defined_external_methods(const RunOpti
   return defined;
 }
 
+// The suite's case patterns; none: the default ones.
+std::vector<std::string> case_patterns_of(const Suite& suite) {
+  return suite.case_patterns.empty() ? default_case_patterns() : suite.case_patterns;
+}
+
 }  // namespace
 
 std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCatalog& catalog) {
-  const auto cases = select_cases(
-      catalog, options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
+  const auto cases = select_cases(catalog, case_patterns_of(options.suite));
   std::map<std::string, ExternalMethodSpec> external = defined_external_methods(options);
-  std::vector<std::string> methods = options.method_ids;
+  std::vector<std::string> methods = options.suite.methods;
   if (methods.empty()) {
     for (const auto& method : make_all_methods())
       methods.push_back(method->id());
@@ -66,21 +65,28 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
     else
       make_method(id);  // throws for an unknown id
   }
-  for (const auto& spec : options.external_methods) {
+  for (const auto& spec : options.suite.external_methods) {
     if (std::find(methods.begin(), methods.end(), spec.name) == methods.end())
       methods.push_back(spec.name);
   }
-  for (const auto& user : options.users)
+  for (const auto& user : options.suite.users)
     check_user_kind(user);
+  std::map<std::string, MethodOptions> builtin_options;
+  for (const auto& id : methods) {
+    if (!external.count(id))
+      builtin_options[id] = make_method(id)->options();
+  }
   std::vector<Job> jobs;
   for (const auto& c : cases) {
     for (const auto& method_id : methods) {
-      for (const auto& user : options.users) {
-        for (double noise : options.noise_levels) {
-          for (auto seed : options.seeds) {
+      for (const auto& user : options.suite.users) {
+        for (double noise : options.suite.noise_levels) {
+          for (auto seed : options.suite.seeds) {
             Job job{c.id, method_id, noise, seed, user};
             if (const auto it = external.find(method_id); it != external.end())
               job.external = it->second;
+            else
+              job.method_options = builtin_options.at(method_id);
             jobs.push_back(std::move(job));
           }
         }
@@ -90,30 +96,24 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
   return jobs;
 }
 
-RunOptions run_options_from_suite(const Suite& suite) {
-  RunOptions options;
-  options.case_patterns = suite.case_patterns;
-  options.method_ids = suite.methods;
-  options.external_methods = suite.external_methods;
-  options.users = suite.users;
-  options.noise_levels = suite.noise_levels;
-  options.seeds = suite.seeds;
-  options.catalog.include_cad = suite.include_cad;
-  options.evaluation = suite.evaluation;
-  options.runner.timeout_seconds = suite.timeout_seconds;
-  options.runner.memory_limit_bytes = suite.memory_limit_bytes;
-  options.method_repetitions = suite.method_repetitions;
-  options.suite_name = suite.name;
-  return options;
+generators::CatalogOptions run_catalog_options(const RunOptions& options) {
+  generators::CatalogOptions catalog_options;
+  catalog_options.cad_data_dir = options.cad_data_dir;
+  catalog_options.include_cad = options.suite.include_cad;
+  catalog_options.user_meshes = options.suite.meshes;
+  catalog_options.prepare = options.prepare;
+  catalog_options.families = families_of_patterns(case_patterns_of(options.suite));
+  return catalog_options;
 }
 
-generators::CatalogOptions run_catalog_options(const RunOptions& options) {
-  generators::CatalogOptions catalog_options = options.catalog;
-  if (catalog_options.families.empty()) {
-    catalog_options.families = families_of_patterns(
-        options.case_patterns.empty() ? default_case_patterns() : options.case_patterns);
-  }
-  return catalog_options;
+ProcessPoolOptions runner_options_of(const RunOptions& options) {
+  ProcessPoolOptions runner;
+  runner.workers = options.workers;
+  runner.timeout_seconds = options.suite.timeout_seconds;
+  runner.memory_limit_bytes = options.suite.memory_limit_bytes;
+  runner.resume = options.resume;
+  runner.progress = options.progress;
+  return runner;
 }
 
 RunSummary run_jobs(const RunOptions& options) {
@@ -125,8 +125,8 @@ RunSummary run_jobs(const RunOptions& options) {
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;
   job_options.catalog = &catalog;
-  job_options.evaluation = options.evaluation;
-  job_options.method_repetitions = options.method_repetitions;
+  job_options.evaluation = options.suite.evaluation;
+  job_options.method_repetitions = options.suite.method_repetitions;
   if (options.snapshots) {
     job_options.snapshot_dir = options.out_dir / "snapshots";
     if (options.viewer_meshes)
@@ -142,7 +142,7 @@ RunSummary run_jobs(const RunOptions& options) {
         ++summary.failures;
     }
   } else {
-    RunnerOptions runner = options.runner;
+    ProcessPoolOptions runner = runner_options_of(options);
     std::map<std::string, std::pair<std::string, std::string>> family_kind;
     for (const auto& d : catalog.cases())
       family_kind[d.id] = {d.family, d.kind};
@@ -150,13 +150,14 @@ RunSummary run_jobs(const RunOptions& options) {
       const auto it = family_kind.find(id);
       return it != family_kind.end() ? it->second : std::pair<std::string, std::string>();
     };
-    RunnerResult result = run_isolated(jobs, run_one, options.out_dir / "records.jsonl", runner);
+    ProcessPoolResult result =
+        run_isolated(jobs, run_one, options.out_dir / "records.jsonl", runner);
     summary.records = std::move(result.records);
     summary.failures = result.failures;
   }
   summary.results_json = options.out_dir / "results.json";
   summary.results_csv = options.out_dir / "results.csv";
-  RunContext context = current_context(options.suite_name);
+  RunContext context = current_context(options.suite.name);
   if (options.shard.count > 1)
     context.shard = to_string(options.shard);
   write_results_json(summary.results_json, context, summary.records);
