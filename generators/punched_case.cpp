@@ -4,6 +4,7 @@
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "generators/hole_punch.h"
+#include "generators/missing_sharp_edges.h"
 #include "generators/random.h"
 
 #include <algorithm>
@@ -91,32 +92,6 @@ std::vector<int> select_faces(const Mesh& mesh, VertexHandle target, const Frame
       faces.push_back(f.idx());
   }
   return faces;
-}
-
-// Sharp edges with both faces removed, chained into polylines.
-std::vector<std::vector<Point>> missing_edges(const AnalysedModel& model,
-                                              const std::vector<char>& removed) {
-  std::vector<std::vector<Point>> polylines;
-  const Mesh& mesh = model.mesh;
-  for (const auto& chain : model.features.chains) {
-    std::vector<Point> current;
-    for (std::size_t i = 0; i < chain.edges.size(); ++i) {
-      const auto e = chain.edges[i];
-      const bool gone = removed[mesh.face_handle(mesh.halfedge_handle(e, 0)).idx()] &&
-                        removed[mesh.face_handle(mesh.halfedge_handle(e, 1)).idx()];
-      if (gone) {
-        if (current.empty())
-          current.push_back(mesh.point(chain.vertices[i]));
-        current.push_back(mesh.point(chain.vertices[i + 1]));
-      } else if (!current.empty()) {
-        polylines.push_back(std::move(current));
-        current.clear();
-      }
-    }
-    if (!current.empty())
-      polylines.push_back(std::move(current));
-  }
-  return polylines;
 }
 
 // The labels, where the hole is one loop along planar regions whose missing part lies in
@@ -240,7 +215,7 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
   std::vector<char> removed(mesh.n_faces(), 0);
   for (int f : truth.removed_faces)
     removed[f] = 1;
-  truth.missing_edges = missing_edges(model, removed);
+  truth.missing_edges = missing_sharp_edges(mesh, removed, FeatureChainEdges{model.features});
   for (const auto& corner : model.features.corners) {
     bool all = true;
     for (auto f : mesh.vf_range(corner.vertex))

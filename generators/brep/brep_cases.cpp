@@ -2,18 +2,16 @@
 
 #include "core/boundary_loops.h"
 #include "core/distances.h"
+#include "generators/brep/brep_catalogue.h"
 #include "generators/brep/brep_hole_loops.h"
-#include "generators/brep/brep_models.h"
 #include "generators/brep/polyhedron.h"
 #include "generators/hole_punch.h"
+#include "generators/missing_sharp_edges.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <map>
-#include <set>
 #include <stdexcept>
 #include <variant>
 
@@ -31,34 +29,6 @@ constexpr double kRemovalSpacing = 0.5;
 /// structure sizes.
 constexpr double kSmallScale = 0.5;
 constexpr double kLargeScale = 2.0;
-
-enum class Target { Face, Edge, Vertex };
-
-/// A hole punched by a ball around a face-interior point, an edge point or a vertex.
-struct BallSpec {
-  std::function<Polyhedron()> model;
-  Point center;
-  Target target = Target::Face;
-  double small_radius = 0.25;
-  double large_radius = 1.5;
-};
-
-/// A hole left by removing whole faces (given by a point inside each).
-struct RemovalSpec {
-  std::function<Polyhedron()> model;
-  std::vector<Point> faces;
-  bool keep = false;  ///< true: `faces` are kept and every other face is removed
-};
-
-struct Recipe {
-  std::string stem;  ///< the id without "/small" or "/large"
-  std::string kind;
-  std::string target;  ///< HoleTruth::target
-  std::string combo;   ///< expected label combination (see combo_of); checked on generation
-  std::string weak_spot;
-  std::string description;
-  std::variant<BallSpec, RemovalSpec> spec;
-};
 
 // ---- labels as text ---------------------------------------------------------------
 
@@ -143,52 +113,6 @@ double diameter(const std::vector<Point>& points) {
       d = std::max(d, (points[i] - points[j]).norm());
   }
   return d;
-}
-
-// The complete mesh's sharp edges (between two regions) whose faces are both removed,
-// chained into polylines.
-std::vector<std::vector<Point>> missing_sharp_edges(const Mesh& complete,
-                                                    const std::vector<char>& removed) {
-  std::map<int, std::vector<int>> adjacency;
-  for (auto e : complete.edges()) {
-    if (e.is_boundary())
-      continue;
-    const auto f0 = e.h0().face(), f1 = e.h1().face();
-    if (!removed[f0.idx()] || !removed[f1.idx()] || region(complete, f0) == region(complete, f1))
-      continue;
-    adjacency[e.v0().idx()].push_back(e.v1().idx());
-    adjacency[e.v1().idx()].push_back(e.v0().idx());
-  }
-  std::vector<std::vector<Point>> polylines;
-  std::set<std::pair<int, int>> used;
-  auto walk = [&](int start, int next) {
-    std::vector<Point> line{complete.point(VertexHandle(start))};
-    int previous = start, current = next;
-    for (;;) {
-      used.insert({std::min(previous, current), std::max(previous, current)});
-      line.push_back(complete.point(VertexHandle(current)));
-      const auto& around = adjacency[current];
-      if (around.size() != 2 || current == start)
-        break;
-      const int following = around[0] == previous ? around[1] : around[0];
-      if (used.count({std::min(current, following), std::max(current, following)}))
-        break;
-      previous = current;
-      current = following;
-    }
-    polylines.push_back(std::move(line));
-  };
-  for (int pass = 0; pass < 2; ++pass) {  // open chains first, then cycles
-    for (const auto& [v, around] : adjacency) {
-      if (pass == 0 && around.size() == 2)
-        continue;
-      for (int w : around) {
-        if (!used.count({std::min(v, w), std::max(v, w)}))
-          walk(v, w);
-      }
-    }
-  }
-  return polylines;
 }
 
 // Index of the loop (among `loops`) with a vertex nearest to p.
@@ -322,7 +246,7 @@ Case make_ball_case(const Recipe& recipe, const BallSpec& spec, bool large) {
   std::vector<char> removed(result.complete.n_faces(), 0);
   for (int f : punched.removed_faces)
     removed[f] = 1;
-  truth.missing_edges = missing_sharp_edges(result.complete, removed);
+  truth.missing_edges = missing_sharp_edges(result.complete, removed, RegionBorderEdges{});
   truth.removed_faces = std::move(punched.removed_faces);
   truth.labels = labels;
   result.holes.push_back(std::move(truth));
@@ -331,9 +255,10 @@ Case make_ball_case(const Recipe& recipe, const BallSpec& spec, bool large) {
 
 Case make_removal_case(const Recipe& recipe, const RemovalSpec& spec, bool large) {
   const Polyhedron unit = spec.model();
-  std::vector<char> removed(unit.faces.size(), spec.keep ? 1 : 0);
+  const bool named_kept = spec.named == NamedFaces::Kept;
+  std::vector<char> removed(unit.faces.size(), named_kept ? 1 : 0);
   for (const Point& p : spec.faces)
-    removed[face_containing(unit, p)] = spec.keep ? 0 : 1;
+    removed[face_containing(unit, p)] = named_kept ? 0 : 1;
   const PolyhedronTopology unit_topology(unit);
   const auto brep_loops = brep_hole_loops(unit_topology, removed);
 
@@ -429,7 +354,7 @@ Case make_removal_case(const Recipe& recipe, const RemovalSpec& spec, bool large
     const Point c = result.complete.calc_face_centroid(FaceHandle(f));
     result.holes[nearest_loop(mesh_loop_points, c)].removed_faces.push_back(f);
   }
-  for (auto& line : missing_sharp_edges(result.complete, removed_mesh)) {
+  for (auto& line : missing_sharp_edges(result.complete, removed_mesh, RegionBorderEdges{})) {
     const Point middle = line[line.size() / 2];
     result.holes[nearest_loop(mesh_loop_points, middle)].missing_edges.push_back(std::move(line));
   }
@@ -446,239 +371,11 @@ Case make_removal_case(const Recipe& recipe, const RemovalSpec& spec, bool large
   return result;
 }
 
-// ---- the catalogue -------------------------------------------------------------------
-
-Recipe ball(std::string stem, std::string target, std::string combo,
-            std::function<Polyhedron()> model, Point center, Target kind, std::string description,
-            double small_radius = 0.5, double large_radius = 1.5) {
-  Recipe r;
-  r.stem = std::move(stem);
-  r.target = std::move(target);
-  r.combo = std::move(combo);
-  r.description = std::move(description);
-  r.spec = BallSpec{std::move(model), center, kind, small_radius, large_radius};
-  return r;
-}
-
-Recipe removal(std::string stem, std::string target, std::string combo,
-               std::function<Polyhedron()> model, std::vector<Point> faces, bool keep,
-               std::string description) {
-  Recipe r;
-  r.stem = std::move(stem);
-  r.target = std::move(target);
-  r.combo = std::move(combo);
-  r.description = std::move(description);
-  r.spec = RemovalSpec{std::move(model), std::move(faces), keep};
-  return r;
-}
-
-std::vector<Recipe> make_recipes() {
-  std::vector<Recipe> r;
-  // Inner holes: a ball around a face point (k = 1), an edge point (k = 2), a vertex (k = 3).
-  r.push_back(ball("k1/inner", "face_interior", "k1/inner", make_box_model, {3, 3, 6}, Target::Face,
-                   "box, face interior", 0.25, 1.0));
-  r.push_back(ball("k2/inner/convex", "edge", "k2/inner/convex", make_box_model, {3.5, 0, 6},
-                   Target::Edge, "box, convex edge"));
-  r.push_back(ball("k2/inner/reflex", "edge", "k2/inner/reflex", make_corner_notch_model,
-                   {5, 5, 7.5}, Target::Edge, "corner notch, reflex edge"));
-  r.push_back(ball("k3/inner/convex-convex-convex", "corner", "k3/inner/convex-convex-convex",
-                   make_box_model, {6, 6, 6}, Target::Vertex, "box corner"));
-  r.push_back(ball("k3/inner/convex-convex-reflex", "corner", "k3/inner/convex-convex-reflex",
-                   make_corner_notch_model, {5, 5, 10}, Target::Vertex,
-                   "corner notch, outer vertex"));
-  r.push_back(ball("k3/inner/convex-reflex-reflex", "corner", "k3/inner/convex-reflex-reflex",
-                   make_block_on_plate_model, {3, 3, 2}, Target::Vertex,
-                   "block on a plate, foot of a vertical block edge"));
-  r.push_back(ball("k3/inner/reflex-reflex-reflex", "corner", "k3/inner/reflex-reflex-reflex",
-                   make_corner_notch_model, {5, 5, 5}, Target::Vertex,
-                   "corner notch, inner vertex"));
-
-  // Outer holes: whole faces removed.
-  r.push_back(removal("k1/outer/outer", "faces", "k1/outer/outer", make_box_model, {{3, 3, 6}},
-                      true, "box with only its top face kept"));
-  r.push_back(removal("k2/outer/convex/outer-outer", "faces", "k2/outer/convex/outer-outer",
-                      make_box_model, {{3, 3, 6}, {3, 0, 3}}, true,
-                      "box with only two faces along a convex edge (a ridge) kept"));
-  r.push_back(removal("k2/outer/reflex/outer-outer", "faces", "k2/outer/reflex/outer-outer",
-                      make_valley_model, {{3, 4, 2}, {3, 2, 4}}, true,
-                      "L profile with only the two faces along its reflex edge (a valley) kept"));
-  r.push_back(removal("k2/outer/convex/inner-outer", "faces", "k2/outer/convex/inner-outer",
-                      make_pocket_model, {{5, 5, 1}, {3, 5, 2}, {7, 5, 2}, {5, 7, 2}}, false,
-                      "plate with a pocket: floor and three walls removed"));
-  r.push_back(removal("k2/outer/reflex/inner-outer", "faces", "k2/outer/reflex/inner-outer",
-                      make_block_on_plate_model, {{5, 5, 6}, {3, 5, 4}, {7, 5, 4}, {5, 7, 4}},
-                      false, "block on a plate: top and three walls removed"));
-  // k = 3, every face on its outer boundary: the three faces at a vertex kept.
-  r.push_back(removal("k3/outer/convex-convex-convex/outer-outer-outer", "faces",
-                      "k3/outer/convex-convex-convex/outer-outer-outer", make_box_model,
-                      {{3, 3, 6}, {6, 3, 3}, {3, 6, 3}}, true,
-                      "box, three faces of a corner kept"));
-  r.push_back(removal("k3/outer/convex-convex-reflex/outer-outer-outer", "faces",
-                      "k3/outer/convex-convex-reflex/outer-outer-outer", make_corner_notch_model,
-                      {{2, 2, 10}, {5, 7, 7}, {7, 5, 7}}, true,
-                      "corner notch, the three faces of its outer vertex kept"));
-  r.push_back(removal("k3/outer/convex-reflex-reflex/outer-outer-outer", "faces",
-                      "k3/outer/convex-reflex-reflex/outer-outer-outer", make_corner_block_model,
-                      {{7, 7, 5}, {4, 2, 7}, {2, 4, 7}}, true,
-                      "block on a plate's corner, the three faces at its foot kept"));
-  r.push_back(removal("k3/outer/reflex-reflex-reflex/outer-outer-outer", "faces",
-                      "k3/outer/reflex-reflex-reflex/outer-outer-outer", make_corner_notch_model,
-                      {{7, 7, 5}, {5, 7, 7}, {7, 5, 7}}, true,
-                      "corner notch, the three faces of its inner vertex kept"));
-  // k = 3, one face on its inner boundary: a pocket or a block with two adjacent walls kept.
-  r.push_back(removal("k3/outer/convex-convex-convex/inner-outer-outer", "faces",
-                      "k3/outer/convex-convex-convex/inner-outer-outer", make_l_pocket_model,
-                      {{3, 3, 1}, {2, 4, 2}, {4, 2, 2}, {8, 3, 2}, {3, 8, 2}}, false,
-                      "L-shaped pocket: floor and all walls but the two at its convex inner "
-                      "corner removed"));
-  r.push_back(removal("k3/outer/convex-convex-reflex/inner-outer-outer", "faces",
-                      "k3/outer/convex-convex-reflex/inner-outer-outer", make_pocket_model,
-                      {{5, 5, 1}, {7, 5, 2}, {5, 7, 2}}, false,
-                      "pocket: floor and two adjacent walls removed"));
-  r.push_back(removal("k3/outer/convex-reflex-reflex/inner-outer-outer", "faces",
-                      "k3/outer/convex-reflex-reflex/inner-outer-outer", make_block_on_plate_model,
-                      {{5, 5, 6}, {7, 5, 4}, {5, 7, 4}}, false,
-                      "block on a plate: top and two adjacent walls removed"));
-  r.push_back(removal("k3/outer/reflex-reflex-reflex/inner-outer-outer", "faces",
-                      "k3/outer/reflex-reflex-reflex/inner-outer-outer", make_l_boss_model,
-                      {{4, 4, 6}, {2, 4, 4}, {4, 2, 4}, {8, 3, 4}, {3, 8, 4}}, false,
-                      "L-shaped block: top and all walls but the two at its reflex inner corner "
-                      "removed"));
-
-  // Outer holes on two inner boundaries: a rib standing in a pocket, with a tunnel through it
-  // (floor flush with the plate top) or an L-shaped beam from the pocket's front rim into it
-  // (top flush with the plate top). The rib keeps its front away from the plate top except
-  // along the tunnel floor's / the beam top's edge, so that the two faces meet along one
-  // edge only.
-  r.push_back(removal("k2/outer/convex/inner-inner", "faces", "k2/outer/convex/inner-inner",
-                      make_tunnel_rib_model, {{0.5, 0.5, 3}, {2.5, 4, 2}}, true,
-                      "rib in a pocket, tunnel through the rib: only the plate top (its pocket "
-                      "rim and the tunnel floor) and the rib front (its mouth) kept"));
-  r.push_back(removal(
-      "k3/outer/convex-convex-reflex/inner-inner-outer", "faces",
-      "k3/outer/convex-convex-reflex/inner-inner-outer", make_tunnel_rib_model,
-      {{0.5, 0.5, 3}, {2.5, 4, 2}, {3, 4.5, 4}}, true,
-      "rib in a pocket, tunnel through the rib: plate top, rib front and the tunnel's left wall "
-      "kept (mouth corner on the tunnel floor)"));
-  r.push_back(removal(
-      "k3/outer/convex-convex-convex/inner-inner-outer", "faces",
-      "k3/outer/convex-convex-convex/inner-inner-outer", make_tunnel_rib_model,
-      {{0.5, 0.5, 3}, {2.5, 4, 2}, {5, 4.5, 2.5}}, true,
-      "rib in a pocket, tunnel through the rib with a trench in its floor: plate top, rib front "
-      "and the trench's left wall kept (the mouth's reflex corner at the trench's edge)"));
-  r.push_back(removal("k2/outer/reflex/inner-inner", "faces", "k2/outer/reflex/inner-inner",
-                      make_beam_rib_model, {{0.5, 0.5, 3}, {3.5, 4, 2}}, true,
-                      "rib in a pocket, beam from the pocket rim into the rib: only the plate "
-                      "top (its pocket rim and the beam top) and the rib front kept"));
-  r.push_back(removal(
-      "k3/outer/convex-reflex-reflex/inner-inner-outer", "faces",
-      "k3/outer/convex-reflex-reflex/inner-inner-outer", make_beam_rib_model,
-      {{0.5, 0.5, 3}, {3.5, 4, 2}, {4, 2.5, 2.5}}, true,
-      "rib in a pocket, beam from the pocket rim into the rib: plate top, rib front and the "
-      "beam's left side kept"));
-  r.push_back(removal(
-      "k3/outer/reflex-reflex-reflex/inner-inner-outer", "faces",
-      "k3/outer/reflex-reflex-reflex/inner-inner-outer", make_beam_rib_model,
-      {{0.5, 0.5, 3}, {3.5, 4, 2}, {6, 2.5, 3.5}}, true,
-      "rib in a pocket, L-shaped beam from the pocket rim into the rib: plate top, rib front and "
-      "the face of the beam's raised bar above the beam top kept (reflex corner of the beam's "
-      "cross-section)"));
-
-  // Outer holes on three inner boundaries: three thin frames through one corner V, each
-  // with a tongue reaching into its window, the tongues meeting at V; each frame crosses the
-  // other two planes only in their windows or beyond their borders. The same three faces with
-  // the material behind or in front of them give the convex and the reflex signatures.
-  r.push_back(removal(
-      "k3/outer/convex-convex-convex/inner-inner-inner", "faces",
-      "k3/outer/convex-convex-convex/inner-inner-inner",
-      [] { return make_corner_frames_model(false); }, {{-2, -2, 0}, {0, -2, -2}, {-2, 0, -2}}, true,
-      "three thin frames through a convex corner, each with a tongue into its window, the "
-      "tongues meeting at the corner: only the three faces at the corner kept"));
-  r.push_back(removal(
-      "k3/outer/convex-convex-reflex/inner-inner-inner", "faces",
-      "k3/outer/convex-convex-reflex/inner-inner-inner",
-      [] { return make_notch_frames_model(false); }, {{-2, -2, 0}, {0, 2, -2}, {2, 0, -2}}, true,
-      "three thin frames through a notch's outer corner (an L-shaped tongue and two square "
-      "tongues): only the three faces at the corner kept"));
-  r.push_back(removal(
-      "k3/outer/convex-reflex-reflex/inner-inner-inner", "faces",
-      "k3/outer/convex-reflex-reflex/inner-inner-inner",
-      [] { return make_notch_frames_model(true); }, {{-2, -2, 0}, {0, 2, -2}, {2, 0, -2}}, true,
-      "three thin frames through a notch's corner, the material in front of the faces (an "
-      "L-shaped tongue and two square tongues): only the three faces at the corner kept"));
-  r.push_back(removal(
-      "k3/outer/reflex-reflex-reflex/inner-inner-inner", "faces",
-      "k3/outer/reflex-reflex-reflex/inner-inner-inner",
-      [] { return make_corner_frames_model(true); }, {{-2, -2, 0}, {0, -2, -2}, {-2, 0, -2}}, true,
-      "three thin frames through a reflex corner (the material in front of the faces), each "
-      "with a tongue into its window: only the three faces at the corner kept"));
-
-  // Variants.
-  r.push_back(removal(
-      "weak/multiple-inner-boundaries", "faces", "k2/outer/convex/inner-inner",
-      make_tunnel_rib_model,
-      {{1.5, 2, 1},
-       {5, 1, 2},
-       {1, 3, 2},
-       {10, 3, 2},
-       {1.5, 5, 2},
-       {9.5, 5, 2},
-       {2.5, 5, 4},
-       {2, 4.5, 4},
-       {9, 4.5, 4},
-       {3, 4.5, 4},
-       {5, 4.5, 5},
-       {8, 4.5, 4},
-       {6.5, 4.5, 2},
-       {5, 4.5, 2.5},
-       {6.5, 5, 2.5}},
-      false,
-      "rib in a pocket, tunnel through the rib, as a scan from the front sees it: the pocket, "
-      "the tunnel, the trench and the rib's back and sides missing, everything else kept"));
-  r.back().weak_spot = "multiple_inner_boundaries";
-  r.push_back(removal("k3/linearly-dependent", "faces",
-                      "k3/outer/convex-convex-convex/outer-outer-outer",
-                      make_triangular_prism_model, {{8, 2, 1}}, false,
-                      "triangular prism, one end cap removed: three faces whose planes share no "
-                      "point"));
-  r.push_back(removal("k4/step-parallel-faces", "faces",
-                      "k4/outer/convex-convex-reflex-reflex/outer-outer-outer-outer",
-                      make_step_model, {{5, 2, 6}, {5, 5, 4}, {5, 7, 3}}, true,
-                      "step: only upper top, riser and lower top kept; the riser is visited "
-                      "twice"));
-  r.push_back(removal(
-      "weak/twisted-face", "faces", "k2/outer/convex-reflex/inner-outer", make_twisted_model,
-      {{0.5, 0.5, 3}, {3, 4, 4}, {0, 5, 1}, {10, 5, 1}, {5, 0, 1}, {5, 10, 1}, {5, 5, 0}}, true,
-      "plate top twisted around a vertical face: they meet reflex at a block and "
-      "convex at a pocket rim on the same line"));
-  r.back().weak_spot = "twisted_face";
-  for (int sides : {4, 5, 6}) {
-    std::string conv;
-    for (int i = 0; i < sides; ++i)
-      conv += i == 0 ? "convex" : "-convex";
-    r.push_back(ball(
-        fmt::format("k{}/pyramid-apex", sides), "apex", fmt::format("k{}/inner/{}", sides, conv),
-        [sides] { return make_pyramid_model(sides); }, {0, 0, 6}, Target::Vertex,
-        fmt::format("apex of a pyramid with {} sides", sides), 0.3, 1.5));
-  }
-  for (auto& recipe : r) {
-    const auto slash = recipe.stem.find('/');
-    recipe.kind = recipe.stem.substr(0, slash) + "/" +
-                  recipe.stem.substr(slash + 1, recipe.stem.find('/', slash + 1) - slash - 1);
-  }
-  return r;
-}
-
-const std::vector<Recipe>& recipes() {
-  static const std::vector<Recipe> all = make_recipes();
-  return all;
-}
-
 }  // namespace
 
 std::vector<CaseDescriptor> list_brep_cases() {
   std::vector<CaseDescriptor> descriptors;
-  for (const auto& recipe : recipes()) {
+  for (const auto& recipe : brep_recipes()) {
     for (const char* size : {"small", "large"}) {
       descriptors.push_back(
           {"brep/" + recipe.stem + "/" + size, "brep", recipe.kind,
@@ -690,7 +387,7 @@ std::vector<CaseDescriptor> list_brep_cases() {
 }
 
 Case make_brep_case(const std::string& id) {
-  for (const auto& recipe : recipes()) {
+  for (const auto& recipe : brep_recipes()) {
     const std::string base = "brep/" + recipe.stem + "/";
     if (id != base + "small" && id != base + "large")
       continue;
