@@ -1,8 +1,10 @@
 #include "metrics/hausdorff_distance.h"
 
 #include "core/distances.h"
+#include "metrics/cell_queue.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
+#include "metrics/triangle_cell.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -12,28 +14,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <queue>
 #include <vector>
 
 namespace holebench {
 namespace {
-
-// A (sub)triangle of A with its corners' distances to B and its upper bound.
-struct Cell {
-  std::array<Point, 3> corners;
-  std::array<double, 3> corner_distance;
-  std::array<int, 3> corner_face = {-1, -1, -1};  // faces of B nearest to the corners
-  double upper = 0.0;
-  std::size_t order = 0;  // creation order: breaks ties in the queue deterministically
-};
-
-struct CellOrder {
-  bool operator()(const Cell& x, const Cell& y) const {
-    if (x.upper != y.upper)
-      return x.upper < y.upper;
-    return x.order > y.order;
-  }
-};
 
 class DirectedSearch {
  public:
@@ -51,20 +35,12 @@ class DirectedSearch {
     }
     for (double d : vertices->distance)
       result_.lower = std::max(result_.lower, d);
-    std::vector<Cell> initial;
+    std::vector<TriangleCell> initial;
     initial.reserve(a.n_faces());
     for (auto f : a.faces()) {
       if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
         continue;  // lies on B: distance zero everywhere
-      Cell cell;
-      int k = 0;
-      for (auto v : f.vertices()) {
-        cell.corners[k] = a.point(v);
-        cell.corner_distance[k] = vertices->distance[v.idx()];
-        cell.corner_face[k] = vertices->nearest_face[v.idx()];
-        ++k;
-      }
-      initial.push_back(std::move(cell));
+      initial.push_back(face_cell(a, f, *vertices));
     }
     // The first cells' queries in parallel, queued in face order (the same queue, and so
     // the same result, whatever the number of threads).
@@ -75,23 +51,22 @@ class DirectedSearch {
                         for (std::size_t i = range.begin(); i != range.end(); ++i)
                           bounds[i] = bound_of(initial[i], settled_now);
                       });
-    // Queued all at once (one heap build, no copies): the same queue as pushing them in
-    // face order, since the order is total.
+    // Queued all at once, in face order.
     for (std::size_t i = 0; i < initial.size(); ++i)
       prepare(initial[i], bounds[i]);
-    queue_ = Queue(CellOrder{}, std::move(initial));
-    while (!queue_.empty()) {
-      if (queue_.top().upper <= result_.lower + options_.error_bound)
-        break;
-      if (result_.queries >= options_.max_queries) {
-        result_.converged = false;
-        break;
-      }
-      Cell cell = queue_.top();
-      queue_.pop();
-      split(cell);
-    }
-    result_.upper = std::max(result_.lower, queue_.empty() ? 0.0 : queue_.top().upper);
+    queue_.start(std::move(initial));
+    // Split the cell with the largest upper bound until none is above the largest distance
+    // found plus the error bound.
+    const bool bound_met = refine_largest_first(
+        queue_,
+        [this](const TriangleCell& top) {
+          return top.priority <= result_.lower + options_.error_bound;
+        },
+        [this] { return result_.queries >= options_.max_queries; },
+        [this](const TriangleCell& cell) { split(cell); });
+    if (!bound_met)
+      result_.converged = false;
+    result_.upper = std::max(result_.lower, queue_.empty() ? 0.0 : queue_.top().priority);
     return result_;
   }
 
@@ -126,7 +101,7 @@ class DirectedSearch {
     bool queried = false;
   };
 
-  Bound bound_of(const Cell& cell, double settled) const {
+  Bound bound_of(const TriangleCell& cell, double settled) const {
     const auto& c = cell.corners;
     const auto& d = cell.corner_distance;
     const double largest_corner = *std::max_element(d.begin(), d.end());
@@ -160,49 +135,31 @@ class DirectedSearch {
 
   double settled() const { return result_.lower + options_.error_bound; }
 
-  // Counts the cell's centroid query and gives it its bound and creation order.
-  void prepare(Cell& cell, const Bound& bound) {
+  // Counts the cell's centroid query and gives it its bound, its priority in the queue.
+  void prepare(TriangleCell& cell, const Bound& bound) {
     if (bound.queried) {
       ++result_.queries;
       result_.lower = std::max(result_.lower, bound.centroid_distance);
     }
-    cell.upper = bound.upper;
-    cell.order = next_order_++;
+    cell.priority = bound.upper;
   }
 
-  void enqueue(Cell cell, const Bound& bound) {
-    prepare(cell, bound);
+  void push(TriangleCell cell) {
+    prepare(cell, bound_of(cell, settled()));
     queue_.push(std::move(cell));
   }
 
-  void push(Cell cell) { enqueue(cell, bound_of(cell, settled())); }
-
-  void split(const Cell& cell) {
-    const auto& c = cell.corners;
-    const auto& d = cell.corner_distance;
-    const auto& f = cell.corner_face;
-    const std::array<Point, 3> mid = {(c[0] + c[1]) * 0.5, (c[1] + c[2]) * 0.5,
-                                      (c[2] + c[0]) * 0.5};
-    std::array<double, 3> md;
-    std::array<int, 3> mf;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      const auto closest = query(mid[i], std::min(d[i], d[j]) + 0.5 * (c[j] - c[i]).norm());
-      md[i] = closest.distance;
-      mf[i] = closest.face;
-    }
-    push({{c[0], mid[0], mid[2]}, {d[0], md[0], md[2]}, {f[0], mf[0], mf[2]}});
-    push({{mid[0], c[1], mid[1]}, {md[0], d[1], md[1]}, {mf[0], f[1], mf[1]}});
-    push({{mid[2], mid[1], c[2]}, {md[2], md[1], d[2]}, {mf[2], mf[1], f[2]}});
-    push({{mid[0], mid[1], mid[2]}, {md[0], md[1], md[2]}, {mf[0], mf[1], mf[2]}});
+  // The midpoints queried first, then each child bounded and queued in turn.
+  void split(const TriangleCell& cell) {
+    const auto query_midpoint = [this](const Point& p, double bound) { return query(p, bound); };
+    for (const TriangleCell& child : split_at_midpoints(cell, query_midpoint))
+      push(child);
   }
 
   const embree::TriangleScene& scene_;
   const HausdorffOptions& options_;
   DirectedHausdorff result_;
-  using Queue = std::priority_queue<Cell, std::vector<Cell>, CellOrder>;
-  Queue queue_;
-  std::size_t next_order_ = 0;
+  CellQueue<TriangleCell> queue_;  // priority: the cell's upper bound
 };
 
 }  // namespace

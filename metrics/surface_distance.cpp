@@ -2,8 +2,10 @@
 
 #include "core/distances.h"
 #include "core/plane_fit.h"
+#include "metrics/cell_queue.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
+#include "metrics/triangle_cell.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -13,7 +15,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <vector>
 
 namespace holebench {
@@ -162,26 +163,16 @@ Polygon2 clip_to_triangle(Polygon2 subject, std::array<Point2, 3> t) {
   return subject;
 }
 
-// A (sub)triangle of A with bounds on the mean of d(x, B) and of d(x, B)^2 over it.
-struct Cell {
-  std::array<Point, 3> corners;
-  std::array<double, 3> corner_distance;
-  std::array<int, 3> corner_face = {-1, -1, -1};  // faces of B nearest to the corners
+// A (sub)triangle of A with bounds on the mean of d(x, B) and of d(x, B)^2 over it. Its
+// priority in the queue is its share of the errors: the largest is refined first.
+struct Cell : TriangleCell {
+  Cell() = default;
+  explicit Cell(const TriangleCell& cell) : TriangleCell(cell) {}
   double area = 0.0;
   double hi = 0.0;                          // pointwise: d <= hi on the cell
   double mean_lo = 0.0, mean_hi = 0.0;      // bounds of the cell's mean of d
   double square_lo = 0.0, square_hi = 0.0;  // bounds of the cell's mean of d^2
-  double key = 0.0;                         // its share of the errors: split the largest
   bool planes_tried = false;                // the plane bounds (tighten()) are in
-  std::size_t order = 0;                    // creation order: deterministic ties
-};
-
-struct CellOrder {
-  bool operator()(const Cell& x, const Cell& y) const {
-    if (x.key != y.key)
-      return x.key < y.key;
-    return x.order > y.order;
-  }
 };
 
 // The errors of the estimates from the sums of area-weighted bound widths.
@@ -220,14 +211,7 @@ class MeanSearch {
     std::vector<Cell> initial;
     initial.reserve(a.n_faces());
     for (auto f : a.faces()) {
-      Cell cell;
-      int k = 0;
-      for (auto v : f.vertices()) {
-        cell.corners[k] = a.point(v);
-        cell.corner_distance[k] = vertices->distance[v.idx()];
-        cell.corner_face[k] = vertices->nearest_face[v.idx()];
-        ++k;
-      }
+      Cell cell(face_cell(a, f, *vertices));
       cell.area = triangle_area(cell.corners);
       if (!(cell.area > 0.0))
         continue;  // a degenerate triangle has no area to integrate
@@ -251,27 +235,29 @@ class MeanSearch {
     for (const Cell& cell : initial)
       sum_square += cell.area * 0.5 * (cell.square_lo + cell.square_hi);
     rms_scale_ = std::max(options_.error_bound, std::sqrt(sum_square / total_area_));
-    // Queued all at once (one heap build, no copies): the same queue as pushing them in
-    // face order, since the order is total.
+    // Queued all at once, in face order.
     for (Cell& cell : initial)
       prepare(cell);
-    queue_ = Queue(CellOrder{}, std::move(initial));
-    while (!queue_.empty() && !within_bound()) {
-      if (result_.queries >= options_.max_queries ||
-          (result_.queries >= options_.query_budget && within_coarse_bound())) {
-        result_.converged = false;
-        break;
-      }
-      Cell cell = queue_.top();
-      queue_.pop();
-      remove_sums(cell);
-      if (!cell.planes_tried && near_enough_to_tighten(cell)) {
-        tighten(cell);
-        enqueue(std::move(cell));
-      } else {
-        split(cell);
-      }
-    }
+    queue_.start(std::move(initial));
+    // Refine the cell with the largest share of the errors (its plane bounds first, where
+    // near enough, else its split) until the estimates are within their bounds.
+    const bool bound_met = refine_largest_first(
+        queue_, [this](const Cell&) { return within_bound(); },
+        [this] {
+          return result_.queries >= options_.max_queries ||
+                 (result_.queries >= options_.query_budget && within_coarse_bound());
+        },
+        [this](Cell& cell) {
+          remove_sums(cell);
+          if (!cell.planes_tried && near_enough_to_tighten(cell)) {
+            tighten(cell);
+            enqueue(std::move(cell));
+          } else {
+            split(cell);
+          }
+        });
+    if (!bound_met)
+      result_.converged = false;
     // Final sums from the cells themselves (no drift from the running sums).
     sum_mean_ = sum_mean_width_ = sum_square_ = sum_square_width_ = 0.0;
     while (!queue_.empty()) {
@@ -326,13 +312,12 @@ class MeanSearch {
   }
   void remove_sums(const Cell& cell) { add_sums(cell, -1.0); }
 
-  // Counts the cell's query of bound(), gives it its key and creation order and adds it to
-  // the running sums.
+  // Counts the cell's query of bound(), gives it its priority (its share of the errors)
+  // and adds it to the running sums.
   void prepare(Cell& cell) {
     ++result_.queries;  // the one closest-point query of bound()
-    cell.key = cell.area * ((cell.mean_hi - cell.mean_lo) +
-                            (cell.square_hi - cell.square_lo) / (2.0 * rms_scale_));
-    cell.order = next_order_++;
+    cell.priority = cell.area * ((cell.mean_hi - cell.mean_lo) +
+                                 (cell.square_hi - cell.square_lo) / (2.0 * rms_scale_));
     add_sums(cell, 1.0);
   }
 
@@ -581,26 +566,11 @@ class MeanSearch {
     return covered >= area * (1.0 - 1e-9) && covered <= area * (1.0 + 1e-9);
   }
 
+  // The midpoints queried first, then each child with area bounded and queued in turn.
   void split(const Cell& cell) {
-    const auto& c = cell.corners;
-    const auto& d = cell.corner_distance;
-    const auto& f = cell.corner_face;
-    const std::array<Point, 3> mid = {(c[0] + c[1]) * 0.5, (c[1] + c[2]) * 0.5,
-                                      (c[2] + c[0]) * 0.5};
-    std::array<double, 3> md;
-    std::array<int, 3> mf;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      const auto closest = query(mid[i], std::min(d[i], d[j]) + 0.5 * edge_length(c[i], c[j]));
-      md[i] = closest.distance;
-      mf[i] = closest.face;
-    }
-    const std::array<Cell, 4> children = {
-        Cell{{c[0], mid[0], mid[2]}, {d[0], md[0], md[2]}, {f[0], mf[0], mf[2]}},
-        Cell{{mid[0], c[1], mid[1]}, {md[0], d[1], md[1]}, {mf[0], f[1], mf[1]}},
-        Cell{{mid[2], mid[1], c[2]}, {md[2], md[1], d[2]}, {mf[2], mf[1], f[2]}},
-        Cell{{mid[0], mid[1], mid[2]}, {md[0], md[1], md[2]}, {mf[0], mf[1], mf[2]}}};
-    for (Cell child : children) {
+    const auto query_midpoint = [this](const Point& p, double bound) { return query(p, bound); };
+    for (const TriangleCell& piece : split_at_midpoints(cell, query_midpoint)) {
+      Cell child(piece);
       child.area = triangle_area(child.corners);
       if (!(child.area > 0.0))
         continue;
@@ -609,14 +579,10 @@ class MeanSearch {
     }
   }
 
-  static double edge_length(const Point& p, const Point& q) { return (q - p).norm(); }
-
   const embree::TriangleScene& scene_;
   const MeanDistanceOptions& options_;
   DirectedMeanDistance result_;
-  using Queue = std::priority_queue<Cell, std::vector<Cell>, CellOrder>;
-  Queue queue_;
-  std::size_t next_order_ = 0;
+  CellQueue<Cell> queue_;
   double total_area_ = 0.0;
   double rms_scale_ = 0.0;
   double sum_mean_ = 0.0, sum_mean_width_ = 0.0, sum_square_ = 0.0, sum_square_width_ = 0.0;
