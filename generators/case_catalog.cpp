@@ -5,6 +5,7 @@
 #include "generators/box_holes.h"
 #include "generators/brep/brep_cases.h"
 #include "generators/crease_holes.h"
+#include "generators/face_removal.h"
 #include "generators/procedural_solids.h"
 #include "generators/punched_case.h"
 #include "generators/random.h"
@@ -80,6 +81,17 @@ struct CaseCatalog::State {
                          100.0 * size.radius_rel_diag)});
       }
     }
+    // B-Rep models: whole faces removed (file/<stem>/faces/<face ids>).
+    if (model->regions_are_brep_faces) {
+      for (const auto& removal : listed_face_removals(*model)) {
+        add({fmt::format("{}/{}/faces/{}", family, name, face_set_name(removal.faces)), family,
+             fmt::format("faces_k{}_{}", removal.k,
+                         removal.orientation == Orientation::Inner ? "inner" : "outer"),
+             fmt::format("{} {}, B-Rep face{} {} removed ({})", family, name,
+                         removal.faces.size() == 1 ? "" : "s", face_set_name(removal.faces),
+                         removal.combo)});
+      }
+    }
   }
 
   // The loader of the model a punched id names, without listing the other families.
@@ -132,6 +144,17 @@ struct CaseCatalog::State {
           continue;
         if (auto load = loader("cad", parts[1]))
           return make_crease_hole_case(*load(), std::stoi(parts[2]), id);
+      }
+    }
+    if (family == "file" && parts.size() == 4 && parts[2] == "faces") {
+      const auto faces = parse_face_set_name(parts[3]);
+      if (faces) {
+        if (auto load = loader(family, parts[1])) {
+          Case c = make_face_removal_case(*load(), *faces, kStructureSizeRelDiag);
+          c.id = id;
+          c.family = family;
+          return c;
+        }
       }
     }
     if (parts.size() == 4) {

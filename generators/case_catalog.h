@@ -7,6 +7,8 @@
 //   cad/<model>/<target>/<size>       holes punched into CGAL's CAD meshes
 //   solid/<name>/<target>/<size>      holes punched into procedural solids
 //   file/<stem>/<target>/<size>       holes punched into a user's mesh files
+//   file/<stem>/faces/<ids>           B-Rep files: whole faces removed ("6-7-11": faces 6, 7
+//                                     and 11; generators/face_removal.h)
 //   crease/fandisk/<n>                holes across n = 1, 2, 3 creases of the fandisk
 // <size> is "small" (radius 2 % of the diagonal, below the structure size) or "large"
 // (8 %, above it).

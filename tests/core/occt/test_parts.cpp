@@ -75,6 +75,35 @@ TopoDS_Shape plate_with_bosses() {
   return BRepAlgoAPI_Fuse(BRepAlgoAPI_Fuse(plate, boss).Shape(), cone).Shape();
 }
 
+namespace {
+// A prism of height `height` along z over the triangle (a, b, c).
+TopoDS_Shape triangular_prism(const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c, double height) {
+  BRepBuilderAPI_MakePolygon profile(a, b, c, /*Close=*/true);
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(profile.Wire());
+  return BRepPrimAPI_MakePrism(face, gp_Vec(0.0, 0.0, height)).Shape();
+}
+}  // namespace
+
+TopoDS_Shape block_with_pad_pocket_and_split_faces() {
+  TopoDS_Shape part = BRepPrimAPI_MakeBox(60.0, 40.0, 20.0).Shape();
+  part = BRepAlgoAPI_Fuse(part, triangular_prism(gp_Pnt(8.0, 22.0, 20.0), gp_Pnt(24.0, 22.0, 20.0),
+                                                 gp_Pnt(14.0, 34.0, 20.0), 5.0))
+             .Shape();
+  part = BRepAlgoAPI_Cut(part, triangular_prism(gp_Pnt(32.0, 22.0, 14.0), gp_Pnt(48.0, 22.0, 14.0),
+                                                gp_Pnt(40.0, 34.0, 14.0), 7.0))
+             .Shape();
+  // Boxes inside the block, flush with its faces: the Boolean keeps the coincident faces split.
+  // Small enough (the structure size is 6 % of the diagonal, 4.6) that removing them gives
+  // inner holes to be closed automatically.
+  for (const auto& [corner, size] : {std::pair{gp_Pnt(8.0, 6.0, 17.0), gp_Vec(3.0, 3.0, 3.0)},
+                                     {gp_Pnt(26.0, 0.0, 17.0), gp_Vec(3.0, 3.0, 3.0)},
+                                     {gp_Pnt(57.0, 0.0, 17.0), gp_Vec(3.0, 3.0, 3.0)}}) {
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(corner, size.X(), size.Y(), size.Z()).Shape())
+               .Shape();
+  }
+  return part;
+}
+
 std::vector<TestPart> test_parts() {
   return {{"block_with_pocket_and_hole", block_with_pocket_and_hole()},
           {"l_bracket_with_fillet", l_bracket_with_fillet()},

@@ -37,6 +37,13 @@ TopoDS_Shape plate_with_bosses();
 /// The four parts above, by name.
 std::vector<TestPart> test_parts();
 
+/// A fifth part for the face-removal family: a 60 x 40 x 20 block with a triangular pad (height
+/// 5) on its top and a triangular pocket (depth 6) in it, and three 3 x 3 x 3 cubes fused flush
+/// into it that split its faces into coplanar faces (as CAD models built by fusing often are):
+/// a square inside the top face, one on the top-front edge (a square in the top and one in the
+/// front) and one at the top-front-right corner (a square in each of the three faces).
+TopoDS_Shape block_with_pad_pocket_and_split_faces();
+
 /// Writes `shape` as STEP (AP214, the writer's default) to `path`; throws on failure.
 void write_step(const TopoDS_Shape& shape, const std::filesystem::path& path);
 
