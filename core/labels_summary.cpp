@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace holebench {
 
 std::string labels_summary(const Case& c) {
@@ -33,6 +36,41 @@ std::string labels_summary(const Case& c) {
       text += " (weak spot: " + l.known_weak_spot + ")";
   }
   return text;
+}
+
+namespace {
+
+const char* combo_name(Convexity c) {
+  return c == Convexity::Convex ? "convex" : "reflex";
+}
+const char* combo_name(BoundaryKind b) {
+  return b == BoundaryKind::Inner ? "inner" : "outer";
+}
+
+template <typename T>
+std::string sorted_join(const std::vector<T>& values) {
+  std::vector<std::string> names;
+  for (const auto& v : values)
+    names.push_back(combo_name(v));
+  std::sort(names.begin(), names.end());
+  std::string out;
+  for (const auto& n : names)
+    out += (out.empty() ? "" : "-") + n;
+  return out;
+}
+
+}  // namespace
+
+std::string combo_of(const HoleLabels& labels) {
+  std::string combo =
+      fmt::format("k{}/{}", labels.k, labels.orientation == Orientation::Inner ? "inner" : "outer");
+  if (labels.k == 2 && labels.transitions[0] == labels.transitions[1])
+    combo += std::string("/") + combo_name(labels.transitions[0]);
+  else if (labels.k >= 2)
+    combo += "/" + sorted_join(labels.transitions);
+  if (!labels.boundary_kinds.empty())
+    combo += "/" + sorted_join(labels.boundary_kinds);
+  return combo;
 }
 
 }  // namespace holebench

@@ -14,4 +14,10 @@ namespace holebench {
 /// "<target> (no labels)".
 std::string labels_summary(const Case& c);
 
+/// The label combination of one hole, as the B-Rep cases and the face-removal cases are
+/// grouped by: "k<k>/<orientation>[/<convexities>][/<kinds>]", with the convexities and
+/// boundary kinds as sorted multisets joined by '-'; for k = 2 a single word when both
+/// transitions agree (docs/cases.md).
+std::string combo_of(const HoleLabels& labels);
+
 }  // namespace holebench

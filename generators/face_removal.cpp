@@ -1,6 +1,7 @@
 #include "generators/face_removal.h"
 
 #include "core/geometry.h"
+#include "core/labels_summary.h"
 #include "core/plane_fit.h"
 #include "generators/hole_punch.h"
 #include "generators/missing_sharp_edges.h"
@@ -106,38 +107,6 @@ struct Topology {
     wires_known[r] = outer == 1;
   }
 };
-
-const char* name(Convexity c) {
-  return c == Convexity::Convex ? "convex" : "reflex";
-}
-const char* name(BoundaryKind b) {
-  return b == BoundaryKind::Inner ? "inner" : "outer";
-}
-
-template <typename T>
-std::string sorted_join(const std::vector<T>& values) {
-  std::vector<std::string> names;
-  for (const auto& v : values)
-    names.push_back(name(v));
-  std::sort(names.begin(), names.end());
-  std::string out;
-  for (const auto& n : names)
-    out += (out.empty() ? "" : "-") + n;
-  return out;
-}
-
-// As the B-Rep family's combo_of (docs/cases.md).
-std::string combo_of(const HoleLabels& labels) {
-  std::string combo =
-      fmt::format("k{}/{}", labels.k, labels.orientation == Orientation::Inner ? "inner" : "outer");
-  if (labels.k == 2 && labels.transitions[0] == labels.transitions[1])
-    combo += std::string("/") + name(labels.transitions[0]);
-  else if (labels.k >= 2)
-    combo += "/" + sorted_join(labels.transitions);
-  if (!labels.boundary_kinds.empty())
-    combo += "/" + sorted_join(labels.boundary_kinds);
-  return combo;
-}
 
 // The hole left by removing `faces`: its loop and labels (without size and decision), or the
 // reason the family does not keep it.
@@ -476,13 +445,7 @@ Case make_face_removal_case(const AnalysedModel& model, const std::vector<int>& 
   truth.target = "faces";
   truth.removed_faces = punched.removed_faces;
   truth.missing_edges = missing_sharp_edges(mesh, removed, FeatureChainEdges{model.features});
-  for (const auto& corner : model.features.corners) {
-    bool all = true;
-    for (auto f : mesh.vf_range(corner.vertex))
-      all = all && removed[f.idx()];
-    if (all)
-      truth.missing_corners.push_back(mesh.point(corner.vertex));
-  }
+  truth.missing_corners = missing_corners(mesh, removed, model.features);
   truth.labels = std::move(labels);
   c.holes.push_back(std::move(truth));
   c.input = std::move(punched.holed);

@@ -93,4 +93,17 @@ std::vector<std::vector<Point>> missing_sharp_edges(const Mesh& complete,
   return chained_region_borders(complete, removed);
 }
 
+std::vector<Point> missing_corners(const Mesh& complete, const std::vector<char>& removed,
+                                   const FeatureAnalysis& features) {
+  std::vector<Point> corners;
+  for (const auto& corner : features.corners) {
+    bool all = true;
+    for (auto f : complete.vf_range(corner.vertex))
+      all = all && removed[f.idx()];
+    if (all)
+      corners.push_back(complete.point(corner.vertex));
+  }
+  return corners;
+}
+
 }  // namespace holebench::generators

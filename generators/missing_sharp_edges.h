@@ -36,4 +36,8 @@ std::vector<std::vector<Point>> missing_sharp_edges(const Mesh& complete,
                                                     const std::vector<char>& removed,
                                                     const SharpEdges& sharp_edges);
 
+/// The corners of `features` whose faces are all removed: the truth's missing corners.
+std::vector<Point> missing_corners(const Mesh& complete, const std::vector<char>& removed,
+                                   const FeatureAnalysis& features);
+
 }  // namespace holebench::generators

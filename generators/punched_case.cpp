@@ -216,13 +216,7 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
   for (int f : truth.removed_faces)
     removed[f] = 1;
   truth.missing_edges = missing_sharp_edges(mesh, removed, FeatureChainEdges{model.features});
-  for (const auto& corner : model.features.corners) {
-    bool all = true;
-    for (auto f : mesh.vf_range(corner.vertex))
-      all = all && removed[f.idx()];
-    if (all)
-      truth.missing_corners.push_back(mesh.point(corner.vertex));
-  }
+  truth.missing_corners = missing_corners(mesh, removed, model.features);
   if (target.kind != "island")
     truth.labels = planar_labels(model, punched, truth, options);
   c.holes.push_back(std::move(truth));

@@ -2,6 +2,7 @@
 
 #include "core/boundary_loops.h"
 #include "core/distances.h"
+#include "core/labels_summary.h"
 #include "generators/brep/brep_catalogue.h"
 #include "generators/brep/brep_hole_loops.h"
 #include "generators/brep/polyhedron.h"
@@ -31,40 +32,6 @@ constexpr double kSmallScale = 0.5;
 constexpr double kLargeScale = 2.0;
 
 // ---- labels as text ---------------------------------------------------------------
-
-const char* name(Convexity c) {
-  return c == Convexity::Convex ? "convex" : "reflex";
-}
-const char* name(BoundaryKind b) {
-  return b == BoundaryKind::Inner ? "inner" : "outer";
-}
-
-template <typename T>
-std::string sorted_join(const std::vector<T>& values) {
-  std::vector<std::string> names;
-  for (const auto& v : values)
-    names.push_back(name(v));
-  std::sort(names.begin(), names.end());
-  std::string out;
-  for (const auto& n : names)
-    out += (out.empty() ? "" : "-") + n;
-  return out;
-}
-
-// The combination a recipe claims: "k<k>/<orientation>[/<convexities>][/<kinds>]", with the
-// convexities and kinds as sorted multisets; for k = 2 a single word when both transitions
-// agree.
-std::string combo_of(const HoleLabels& labels) {
-  std::string combo =
-      fmt::format("k{}/{}", labels.k, labels.orientation == Orientation::Inner ? "inner" : "outer");
-  if (labels.k == 2 && labels.transitions[0] == labels.transitions[1])
-    combo += std::string("/") + name(labels.transitions[0]);
-  else if (labels.k >= 2)
-    combo += "/" + sorted_join(labels.transitions);
-  if (!labels.boundary_kinds.empty())
-    combo += "/" + sorted_join(labels.boundary_kinds);
-  return combo;
-}
 
 // ---- geometry helpers ---------------------------------------------------------------
 
