@@ -20,6 +20,9 @@
 namespace holebench {
 namespace {
 
+// The most triangles of B the mean search weighs for one cell's exact minimum (bound()).
+constexpr std::size_t kMaxExactMinimumFaces = 256;
+
 double triangle_area(const std::array<Point, 3>& c) {
   return 0.5 * OpenMesh::cross(c[1] - c[0], c[2] - c[0]).norm();
 }
@@ -380,15 +383,22 @@ class MeanSearch {
     // a + centroid_radius of the centroid, a = the smallest distance sampled on the cell
     // (the minimum is at most a, so farther triangles cannot hold it). Only where it can
     // matter: the gap w > bound / 4 and the minimum able to raise lo by more than that.
+    // And only where few triangles of B are that near (kMaxExactMinimumFaces): a large cell
+    // over a finely tessellated B would weigh thousands; its children, smaller, do it
+    // instead (leaving it out only keeps lo lower, so the bounds still hold).
     const double sampled = std::min({d[0], d[1], d[2], nearest.distance});
     const double useful =
         0.25 * std::max(options_.error_bound, options_.relative_error_bound * sampled);
     if (0.5 * (hi - lo) > useful && sampled - lo > useful && lo < centroid_radius &&
         sampled <= 4.0 * centroid_radius) {
-      double minimum = sampled;
-      for (int face : scene_.faces_within(centroid, sampled + centroid_radius))
-        minimum = std::min(minimum, triangle_triangle_distance(c, scene_.triangle_of_face(face)));
-      lo = std::max(lo, minimum);
+      const auto near =
+          scene_.faces_within(centroid, sampled + centroid_radius, kMaxExactMinimumFaces);
+      if (near) {
+        double minimum = sampled;
+        for (int face : *near)
+          minimum = std::min(minimum, triangle_triangle_distance(c, scene_.triangle_of_face(face)));
+        lo = std::max(lo, minimum);
+      }
     }
     hi = std::max(lo, hi);
     cell.hi = hi;

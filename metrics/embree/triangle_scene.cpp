@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -75,16 +76,24 @@ struct RadiusQueryState {
   const std::vector<std::array<Point, 3>>* triangles;
   Point query;
   double radius = 0.0;
+  std::size_t max_primitives = std::numeric_limits<std::size_t>::max();
+  bool overflow = false;
   std::vector<unsigned> primitives;
 };
 
 bool radius_callback(RTCPointQueryFunctionArguments* args) {
   auto* state = static_cast<RadiusQueryState*>(args->userPtr);
+  if (state->overflow)
+    return false;
   const auto& tri = (*state->triangles)[args->primID];
   const Point q = closest_point_on_triangle(state->query, tri[0], tri[1], tri[2]);
   if ((q - state->query).norm() <= state->radius)
     state->primitives.push_back(args->primID);
-  return false;  // the radius never shrinks
+  if (state->primitives.size() <= state->max_primitives)
+    return false;  // the radius never shrinks, unless the count is past the limit:
+  state->overflow = true;
+  args->query->radius = 0.0f;  // then the traversal is cut short
+  return true;
 }
 
 RTCRay make_ray(const Point& origin, const Point& direction, double t_near, double t_far) {
@@ -228,8 +237,10 @@ ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_
   return result;
 }
 
-std::vector<int> TriangleScene::faces_within(const Point& p, double radius) const {
+std::optional<std::vector<int>> TriangleScene::faces_within(const Point& p, double radius,
+                                                            std::size_t max_faces) const {
   RadiusQueryState state;
+  state.max_primitives = max_faces;
   state.triangles = &triangles_;
   state.query = p;
   state.radius = radius;
@@ -246,12 +257,18 @@ std::vector<int> TriangleScene::faces_within(const Point& p, double radius) cons
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(scene_, &query, &context, radius_callback, &state);
+  if (state.overflow)
+    return std::nullopt;
   std::vector<int> faces;
   faces.reserve(state.primitives.size());
   for (unsigned primitive : state.primitives)
     faces.push_back(face_of_primitive_[primitive]);
   std::sort(faces.begin(), faces.end());
   return faces;
+}
+
+std::vector<int> TriangleScene::faces_within(const Point& p, double radius) const {
+  return *faces_within(p, radius, std::numeric_limits<std::size_t>::max());
 }
 
 RayHit TriangleScene::intersect(const Point& origin, const Point& direction, double t_near,

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 struct RTCDeviceTy;
@@ -61,6 +62,11 @@ class TriangleScene {
 
   /// Every face within `radius` of `p` (exact double-precision distances), by face index.
   std::vector<int> faces_within(const Point& p, double radius) const;
+
+  /// The same, or nothing when more than `max_faces` faces are within `radius` (the search
+  /// stops there: a caller that only wants a few nearby faces pays for no more).
+  std::optional<std::vector<int>> faces_within(const Point& p, double radius,
+                                               std::size_t max_faces) const;
 
   /// The first face a ray from `origin` along `direction` hits within (t_near, t_far).
   RayHit intersect(const Point& origin, const Point& direction, double t_near = 0.0,

@@ -1,10 +1,12 @@
 #include "metrics/embree/triangle_scene.h"
 
+#include "core/distances.h"
 #include "generators/box_solid.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace holebench::embree {
 namespace {
@@ -35,6 +37,31 @@ TEST(TriangleScene, RaysHitTheFrontFaceAndOcclusionAgrees) {
   EXPECT_FALSE(scene.occluded(Point(1.0, 0.7, 5.0), Point(0, 0, 1)));
   EXPECT_FALSE(scene.occluded(Point(1.0, 0.7, 5.0), Point(0, 0, -1), 0.0, 3.9));
   EXPECT_FALSE(scene.intersect(Point(5, 5, 5), Point(1, 0, 0)).hit);
+}
+
+// faces_within against a brute-force count; with a limit, the same faces or nothing when
+// more than the limit are within the radius.
+TEST(TriangleScene, FacesWithinARadiusAndTheirLimit) {
+  const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  const TriangleScene scene(box);
+  for (const Point& p : {Point(1.0, 0.75, 0.5), Point(0.1, 0.1, 0.1), Point(3.0, 3.0, 3.0)}) {
+    for (double radius : {0.05, 0.3, 0.6, 1.0, 10.0}) {
+      std::vector<int> expected;
+      for (const auto f : box.faces()) {
+        const auto& t = scene.triangle_of_face(f.idx());
+        if ((closest_point_on_triangle(p, t[0], t[1], t[2]) - p).norm() <= radius)
+          expected.push_back(f.idx());
+      }
+      EXPECT_EQ(scene.faces_within(p, radius), expected);
+      const auto all = scene.faces_within(p, radius, expected.size());
+      ASSERT_TRUE(all.has_value());
+      EXPECT_EQ(*all, expected);
+      if (!expected.empty()) {
+        EXPECT_FALSE(scene.faces_within(p, radius, expected.size() - 1).has_value())
+            << expected.size() << " faces within " << radius;
+      }
+    }
+  }
 }
 
 }  // namespace
