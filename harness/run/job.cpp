@@ -30,27 +30,41 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-JobRecord run_job(const Job& job, const JobOptions& options) {
-  JobRecord record;
-  record.job = job;
-  Case c;
+PreparedCase prepare_case(const Job& job, const JobOptions& options) {
+  PreparedCase prepared;
   try {
     const auto start = Clock::now();
     seed_cgal_default_random();
-    c = options.catalog ? options.catalog->make(job.case_id, job.seed, job.noise_percent)
-                        : generators::make_case(job.case_id, job.seed, job.noise_percent);
-    record.case_family = c.family;
-    record.case_kind = c.kind;
-    record.stages.push_back({"case", seconds_since(start)});
+    prepared.c = options.catalog ? options.catalog->make(job.case_id, job.seed, job.noise_percent)
+                                 : generators::make_case(job.case_id, job.seed, job.noise_percent);
+    prepared.seconds = seconds_since(start);
   } catch (const std::bad_alloc& e) {
-    record.status = JobStatus::OutOfMemory;
-    record.message = std::string("an allocation failed while making the case: ") + e.what();
-    return record;
+    prepared.failure = {JobStatus::OutOfMemory,
+                        std::string("an allocation failed while making the case: ") + e.what()};
   } catch (const std::exception& e) {
-    record.status = JobStatus::InvalidInput;
-    record.message = e.what();
+    prepared.failure = {JobStatus::InvalidInput, e.what()};
+  }
+  return prepared;
+}
+
+JobRecord run_job(const Job& job, const JobOptions& options) {
+  const PreparedCase prepared = prepare_case(job, options);
+  return run_job_on_case(job, prepared, prepared.seconds, options);
+}
+
+JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, double case_seconds,
+                          const JobOptions& options) {
+  JobRecord record;
+  record.job = job;
+  if (prepared.failure) {
+    record.status = prepared.failure->first;
+    record.message = prepared.failure->second;
     return record;
   }
+  const Case& c = prepared.c;
+  record.case_family = c.family;
+  record.case_kind = c.kind;
+  record.stages.push_back({"case", case_seconds});
 
   try {
     const std::unique_ptr<Method> method =

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace holebench::harness {
@@ -90,6 +91,26 @@ struct JobOptions {
   /// median; the first run's result is the one evaluated (the methods are deterministic).
   int method_repetitions = 1;
 };
+
+/// The case of a job, made once for every job that shares it (the same case id, noise level
+/// and seed: harness/run/job_groups.h), or why it could not be made.
+struct PreparedCase {
+  Case c;
+  double seconds = 0.0;  ///< wall time of making it
+  /// Set when the case could not be made: the status (invalid_input, out_of_memory) and
+  /// message every job of it gets.
+  std::optional<std::pair<JobStatus, std::string>> failure;
+};
+
+/// Makes the case of `job` (its id, noise level and seed). Never throws.
+PreparedCase prepare_case(const Job& job, const JobOptions& options);
+
+/// Runs the method of `job` on a prepared case, evaluates, renders. `case_seconds` is the
+/// case time the record's "case" stage carries (the first job of a group carries the making
+/// of the case, the others 0, so that the stages of a run add up to its work). Never
+/// throws: every failure becomes the record's status and message.
+JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, double case_seconds,
+                          const JobOptions& options);
 
 /// Generates the case, runs the method with no user, evaluates, renders. Never throws:
 /// every failure becomes the record's status and message.

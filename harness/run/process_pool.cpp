@@ -45,7 +45,6 @@ using Clock = SteadyClock;
 struct Child {
   pid_t pid = -1;
   int pipe_fd = -1;
-  std::size_t job_index = 0;
   Clock::time_point started;
   std::string output;
   bool timed_out = false;
@@ -100,8 +99,11 @@ JobRecord out_of_memory_record(const Job& job, const std::string& what) {
   return record;
 }
 
-Child start_child(const Job& job, std::size_t index, const JobFunction& run_one,
-                  std::uint64_t memory_limit_bytes) {
+// Starts `body` in a child process that writes to the returned pipe and then ends. The
+// child dies with its parent, leads a process group of its own, has its own TMPDIR and the
+// memory limit.
+Child start_child_process(const std::function<void(int fd)>& body,
+                          std::uint64_t memory_limit_bytes) {
   const std::filesystem::path temporary_dir = make_job_temporary_dir();
   int fds[2];
   if (::pipe(fds) != 0)
@@ -124,24 +126,12 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one,
     ::close(fds[0]);
     // The job's memory limit, inherited by every program it starts.
     apply_memory_limit(memory_limit_bytes);
-    // The child: run the job, send its record, leave without running the parent's atexit
-    // handlers or destructors.
-    // Nothing may escape the child: it must never return into the parent's code.
-    JobRecord record;
+    // Nothing may escape the child: it must never return into the parent's code, nor run
+    // the parent's atexit handlers or destructors.
     try {
-      record = run_one(job);
-    } catch (const std::bad_alloc& e) {
-      record = out_of_memory_record(job, e.what());
-    } catch (const std::exception& e) {
-      record.job = job;
-      record.status = JobStatus::Error;
-      record.message = std::string("uncaught exception: ") + e.what();
+      body(fds[1]);
     } catch (...) {
-      record.job = job;
-      record.status = JobStatus::Error;
-      record.message = "uncaught exception of unknown type";
     }
-    write_all(fds[1], record_to_json_line(record) + "\n");
     ::close(fds[1]);
     std::_Exit(0);
   }
@@ -150,13 +140,58 @@ Child start_child(const Job& job, std::size_t index, const JobFunction& run_one,
   Child child;
   child.pid = pid;
   child.pipe_fd = fds[0];
-  child.job_index = index;
   child.started = Clock::now();
   child.temporary_dir = temporary_dir;
   return child;
 }
 
+// Runs one job in the calling (child) process and writes its record as a line to `fd`.
+void run_job_and_send(const Job& job, const JobFunction& run_one, int fd) {
+  JobRecord record;
+  try {
+    record = run_one(job);
+  } catch (const std::bad_alloc& e) {
+    record = out_of_memory_record(job, e.what());
+  } catch (const std::exception& e) {
+    record.job = job;
+    record.status = JobStatus::Error;
+    record.message = std::string("uncaught exception: ") + e.what();
+  } catch (...) {
+    record.job = job;
+    record.status = JobStatus::Error;
+    record.message = "uncaught exception of unknown type";
+  }
+  write_all(fd, record_to_json_line(record) + "\n");
+}
+
 // The record of a child that ended: parsed from its output, or a crash/timeout record.
+// The record of a job whose process (`process`: "the job's process", or its group's) ended
+// without sending one: stopped past the time limit (`timeout_message`), killed by a SIGKILL
+// the runner did not send (the kernel's out-of-memory killer), or dead by a signal or exit.
+JobRecord record_without_output(const Job& job, int wait_status, bool timed_out,
+                                const std::string& process, const std::string& timeout_message) {
+  JobRecord record;
+  record.job = job;
+  record.user = job.user;
+  if (timed_out) {
+    record.status = JobStatus::Timeout;
+    record.message = timeout_message;
+  } else if (WIFSIGNALED(wait_status) && WTERMSIG(wait_status) == SIGKILL) {
+    record.status = JobStatus::OutOfMemory;
+    record.message = process +
+                     " was killed (SIGKILL, not sent by the runner): most likely by the kernel's "
+                     "out-of-memory killer";
+  } else if (WIFSIGNALED(wait_status)) {
+    record.status = JobStatus::Crash;
+    record.message = process + " died: " + strsignal(WTERMSIG(wait_status));
+  } else {
+    record.status = JobStatus::Crash;
+    record.message = process + " ended without a record (exit code " +
+                     std::to_string(WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1) + ")";
+  }
+  return record;
+}
+
 JobRecord finish_child(const Child& child, const Job& job, int wait_status) {
   if (!child.timed_out && !child.output.empty()) {
     try {
@@ -164,27 +199,105 @@ JobRecord finish_child(const Child& child, const Job& job, int wait_status) {
     } catch (const std::exception&) {
     }
   }
-  JobRecord record;
-  record.job = job;
-  record.user = job.user;
-  if (child.timed_out) {
-    record.status = JobStatus::Timeout;
-    record.message = "stopped after the time limit";
-  } else if (WIFSIGNALED(wait_status) && WTERMSIG(wait_status) == SIGKILL) {
-    // Not the runner's SIGKILL (that is a timeout): the kernel's out-of-memory killer.
-    record.status = JobStatus::OutOfMemory;
-    record.message =
-        "the job's process was killed (SIGKILL, not sent by the runner): most likely by the "
-        "kernel's out-of-memory killer";
-  } else if (WIFSIGNALED(wait_status)) {
-    record.status = JobStatus::Crash;
-    record.message = std::string("the job's process died: ") + strsignal(WTERMSIG(wait_status));
-  } else {
-    record.status = JobStatus::Crash;
-    record.message = "the job's process ended without a record (exit code " +
-                     std::to_string(WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1) + ")";
+  return record_without_output(job, wait_status, child.timed_out, "the job's process",
+                               "stopped after the time limit");
+}
+
+// When the child has ended: collects the rest of its output, closes its pipe, removes its
+// TMPDIR, sets its wait status and returns true.
+bool reap_if_ended(Child& child, int& status) {
+  if (::waitpid(child.pid, &status, WNOHANG) != child.pid)
+    return false;
+  char buffer[65536];
+  for (ssize_t n; (n = ::read(child.pipe_fd, buffer, sizeof(buffer))) > 0;)
+    child.output.append(buffer, static_cast<std::size_t>(n));
+  ::close(child.pipe_fd);
+  std::error_code ignored;
+  std::filesystem::remove_all(child.temporary_dir, ignored);
+  return true;
+}
+
+// Waits for a child to end, collecting its output, and stops it (its process group) past
+// `timeout_seconds` (0: no limit). The child's wait status.
+int wait_for_child(Child& child, double timeout_seconds) {
+  for (;;) {
+    pollfd fd{child.pipe_fd, POLLIN, 0};
+    ::poll(&fd, 1, 100);
+    if (fd.revents & (POLLIN | POLLHUP | POLLERR)) {
+      char buffer[65536];
+      const ssize_t n = ::read(child.pipe_fd, buffer, sizeof(buffer));
+      if (n > 0) {
+        child.output.append(buffer, static_cast<std::size_t>(n));
+        continue;
+      }
+    }
+    if (timeout_seconds > 0 && seconds_since(child.started) > timeout_seconds && !child.timed_out) {
+      ::kill(-child.pid, SIGKILL);
+      child.timed_out = true;
+    }
+    int status = 0;
+    if (reap_if_ended(child, status))
+      return status;
   }
-  return record;
+}
+
+// The line a group's process writes once its shared part is prepared (the case made).
+constexpr const char* kPreparedLine = "prepared";
+
+// The body of a group's process: prepares what the group's jobs share once, says so, then
+// runs each job in a child process of its own, one after the other, each under the job's
+// timeout, and writes each record as a line to `fd` as it ends.
+void run_group(const std::vector<Job>& group, const GroupFunction& prepare,
+               const ProcessPoolOptions& options, int fd) {
+  JobFunction run_one;
+  try {
+    run_one = prepare(group);
+  } catch (const std::bad_alloc& e) {
+    run_one = [what = std::string(e.what())](const Job& job) {
+      return out_of_memory_record(job, what);
+    };
+  } catch (const std::exception& e) {
+    run_one = [what = std::string(e.what())](const Job& job) -> JobRecord {
+      throw std::runtime_error("preparing the job's case: " + what);
+    };
+  }
+  write_all(fd, std::string(kPreparedLine) + "\n");
+  for (const Job& job : group) {
+    Child child = start_child_process(
+        [&job, &run_one](int job_fd) { run_job_and_send(job, run_one, job_fd); },
+        options.memory_limit_bytes);
+    const int status = wait_for_child(child, options.timeout_seconds);
+    // The job's own line as it sent it, when it sent one; else the record of how it ended.
+    std::string line;
+    if (!child.timed_out && !child.output.empty()) {
+      try {
+        record_from_json_text(child.output);
+        line = child.output;
+      } catch (const std::exception&) {
+      }
+    }
+    if (line.empty())
+      line = record_to_json_line(finish_child(child, job, status)) + "\n";
+    write_all(fd, line);
+  }
+}
+
+// A group's process as the runner sees it: its jobs (indices into the plan, in the order
+// it runs them) and how far it got.
+struct RunningGroup {
+  Child process;
+  std::vector<std::size_t> job_indices;
+  std::size_t records_received = 0;
+  bool prepared = false;
+  Clock::time_point last_progress;
+};
+
+// The record of a job of a group whose process ended (or was stopped) before sending it.
+JobRecord unfinished_group_record(const RunningGroup& group, const Job& job, int wait_status) {
+  return record_without_output(
+      job, wait_status, group.process.timed_out, "the process making the job's case",
+      group.prepared ? "stopped after the time limit (its group's process hung)"
+                     : "stopped after the time limit while making its case");
 }
 
 class Progress {
@@ -233,6 +346,14 @@ class Progress {
 ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
                                const std::filesystem::path& records_path,
                                const ProcessPoolOptions& options) {
+  const GroupFunction prepare = [&run_one](const std::vector<Job>&) { return run_one; };
+  return run_grouped(jobs, nullptr, prepare, records_path, options);
+}
+
+ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFunction& group_of,
+                              const GroupFunction& prepare,
+                              const std::filesystem::path& records_path,
+                              const ProcessPoolOptions& options) {
   const auto start = Clock::now();
   ProcessPoolResult result;
   std::map<std::string, JobRecord> done;
@@ -255,15 +376,24 @@ ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& 
     }
   }
 
-  std::vector<std::size_t> pending;
+  // The jobs still to run, in groups (in the order of each group's first job).
+  std::vector<std::vector<std::size_t>> groups;
+  std::map<std::string, std::size_t> group_by_key;
   std::set<std::string> wanted;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     wanted.insert(jobs[i].id());
     if (done.count(jobs[i].id())) {
       ++result.resumed;
-    } else {
-      pending.push_back(i);
+      continue;
     }
+    if (!group_of) {
+      groups.push_back({i});
+      continue;
+    }
+    const auto [it, added] = group_by_key.emplace(group_of(jobs[i]), groups.size());
+    if (added)
+      groups.emplace_back();
+    groups[it->second].push_back(i);
   }
   const int workers = options.workers > 0
                           ? options.workers
@@ -274,56 +404,99 @@ ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& 
   for (const auto& [id, record] : done)
     failures += wanted.count(id) && record.status != JobStatus::Ok ? 1 : 0;
 
-  std::vector<Child> running;
+  const auto take = [&](JobRecord record) {
+    const Job& job = record.job;
+    if (record.case_family.empty() && options.case_family_kind)
+      std::tie(record.case_family, record.case_kind) = options.case_family_kind(job.case_id);
+    append_record(fd, record_to_json_line(record) + "\n", records_path);
+    failures += record.status != JobStatus::Ok ? 1 : 0;
+    ++finished;
+    progress.update(finished, failures, job.id() + " " + to_string(record.status));
+    done[job.id()] = std::move(record);
+  };
+  // The complete lines a group's process sent: "prepared", then one record per job.
+  const auto take_lines = [&](RunningGroup& group) {
+    std::string& output = group.process.output;
+    std::size_t line_start = 0;
+    for (std::size_t end; (end = output.find('\n', line_start)) != std::string::npos;
+         line_start = end + 1) {
+      const std::string line = output.substr(line_start, end - line_start);
+      group.last_progress = Clock::now();
+      if (line == kPreparedLine) {
+        group.prepared = true;
+        continue;
+      }
+      if (group.records_received >= group.job_indices.size())
+        continue;
+      const Job& job = jobs[group.job_indices[group.records_received]];
+      JobRecord record;
+      try {
+        record = record_from_json_text(line);
+      } catch (const std::exception& e) {
+        record = JobRecord{};
+        record.job = job;
+        record.user = job.user;
+        record.status = JobStatus::Error;
+        record.message = std::string("the job's record did not read back: ") + e.what();
+      }
+      ++group.records_received;
+      take(std::move(record));
+    }
+    output.erase(0, line_start);
+  };
+
+  std::vector<RunningGroup> running;
   std::size_t next = 0;
-  while (next < pending.size() || !running.empty()) {
-    while (next < pending.size() && static_cast<int>(running.size()) < workers) {
-      running.push_back(
-          start_child(jobs[pending[next]], pending[next], run_one, options.memory_limit_bytes));
+  while (next < groups.size() || !running.empty()) {
+    while (next < groups.size() && static_cast<int>(running.size()) < workers) {
+      RunningGroup group;
+      group.job_indices = groups[next];
+      std::vector<Job> group_jobs;
+      for (std::size_t index : group.job_indices)
+        group_jobs.push_back(jobs[index]);
+      group.process = start_child_process(
+          [&group_jobs, &prepare, &options](int group_fd) {
+            run_group(group_jobs, prepare, options, group_fd);
+          },
+          options.memory_limit_bytes);
+      group.last_progress = Clock::now();
+      running.push_back(std::move(group));
       ++next;
     }
     std::vector<pollfd> fds;
-    for (const auto& child : running)
-      fds.push_back({child.pipe_fd, POLLIN, 0});
+    for (const auto& group : running)
+      fds.push_back({group.process.pipe_fd, POLLIN, 0});
     ::poll(fds.data(), fds.size(), 100);
-    for (std::size_t c = 0; c < running.size(); ++c) {
-      Child& child = running[c];
-      if (fds[c].revents & (POLLIN | POLLHUP | POLLERR)) {
+    for (std::size_t g = 0; g < running.size(); ++g) {
+      RunningGroup& group = running[g];
+      Child& child = group.process;
+      if (fds[g].revents & (POLLIN | POLLHUP | POLLERR)) {
         char buffer[65536];
         const ssize_t n = ::read(child.pipe_fd, buffer, sizeof(buffer));
-        if (n > 0)
+        if (n > 0) {
           child.output.append(buffer, static_cast<std::size_t>(n));
-        if (n > 0)
-          continue;  // more may follow; the pipe closes when the child ends
+          take_lines(group);
+          continue;  // more may follow; the pipe closes when the process ends
+        }
       }
-      const double elapsed = seconds_since(child.started);
-      if (options.timeout_seconds > 0 && elapsed > options.timeout_seconds && !child.timed_out) {
-        ::kill(-child.pid, SIGKILL);  // the job's process group
+      // The group's process stops each job past the timeout itself; it is stopped here
+      // only when it sends nothing for longer than that (making its case hung), with a
+      // margin for stopping a job and sending its record.
+      if (options.timeout_seconds > 0 && !child.timed_out &&
+          seconds_since(group.last_progress) >
+              options.timeout_seconds + options.group_stall_margin_seconds) {
+        ::kill(-child.pid, SIGKILL);
         child.timed_out = true;
       }
       int status = 0;
-      const pid_t ended = ::waitpid(child.pid, &status, WNOHANG);
-      if (ended != child.pid)
+      if (!reap_if_ended(child, status))
         continue;
-      // Drain what is left in the pipe.
-      char buffer[65536];
-      for (ssize_t n; (n = ::read(child.pipe_fd, buffer, sizeof(buffer))) > 0;)
-        child.output.append(buffer, n);
-      ::close(child.pipe_fd);
-      std::error_code ignored;
-      std::filesystem::remove_all(child.temporary_dir, ignored);
-      const Job& job = jobs[child.job_index];
-      JobRecord record = finish_child(child, job, status);
-      if (record.case_family.empty() && options.case_family_kind)
-        std::tie(record.case_family, record.case_kind) = options.case_family_kind(job.case_id);
-      append_record(fd, record_to_json_line(record) + "\n", records_path);
-      failures += record.status != JobStatus::Ok ? 1 : 0;
-      ++finished;
-      progress.update(finished, failures, job.id() + " " + to_string(record.status));
-      done[job.id()] = std::move(record);
-      running.erase(running.begin() + static_cast<std::ptrdiff_t>(c));
-      fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(c));
-      --c;
+      take_lines(group);
+      for (std::size_t r = group.records_received; r < group.job_indices.size(); ++r)
+        take(unfinished_group_record(group, jobs[group.job_indices[r]], status));
+      running.erase(running.begin() + static_cast<std::ptrdiff_t>(g));
+      fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(g));
+      --g;
     }
   }
   ::close(fd);

@@ -6,11 +6,13 @@
 // (std::bad_alloc caught in the child, or the child killed by a SIGKILL the runner did not
 // send: the kernel's out-of-memory killer), and the run goes on.
 //
-// Each job runs in a child process (fork) that sends its record back through a pipe. The
-// parent keeps up to `workers` children running, stops a child that passes the timeout
-// (status timeout; the child leads a process group, and the whole group is stopped, so a
-// program an external method started goes with it), and records a child that dies without a
-// record (status crash, with the signal). A child dies with the runner's process
+// Each job runs in a child process (fork) that sends its record back through a pipe. Jobs
+// that share a case (run_grouped) run as a group: the runner keeps up to `workers` group
+// processes running; each makes its case once and forks one child per job, one after the
+// other. The process that started a job's child stops it when it passes the timeout (status
+// timeout; the child leads a process group, and the whole group is stopped, so a program an
+// external method started goes with it), and records a child that dies without a record
+// (status crash, with the signal). A child dies with the runner's process
 // (PR_SET_PDEATHSIG), so a run killed outright leaves no job running behind it. Each child has
 // its own TMPDIR, a fresh folder removed when the child ends, so a stopped job leaves no
 // temporary files (an external method's meshes) behind. Every finished
@@ -26,6 +28,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -42,6 +45,9 @@ struct ProcessPoolOptions {
   /// job that timed out or crashed sends none), so that reports group them with their case.
   /// Unset: they stay empty.
   std::function<std::pair<std::string, std::string>(const std::string& case_id)> case_family_kind;
+  /// run_grouped: a group's process that sends nothing for the timeout plus this long (it
+  /// hangs while preparing its case; it stops its jobs' children itself) is stopped.
+  double group_stall_margin_seconds = 30.0;
 };
 
 struct ProcessPoolResult {
@@ -53,10 +59,28 @@ struct ProcessPoolResult {
 
 using JobFunction = std::function<JobRecord(const Job&)>;
 
-/// Runs `jobs` with `run_one` (in child processes), appending to `records_path`.
+/// The group of a job: jobs with the same key share what `GroupFunction` prepares.
+using GroupKeyFunction = std::function<std::string(const Job&)>;
+
+/// Prepares, in a group's process and once, what the group's jobs share (their case), and
+/// returns the function that runs one job of the group (in a child process of its own).
+using GroupFunction = std::function<JobFunction(const std::vector<Job>& group)>;
+
+/// Runs `jobs` with `run_one`, each in a child process, appending to `records_path`.
 ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& run_one,
                                const std::filesystem::path& records_path,
                                const ProcessPoolOptions& options);
+
+/// Runs `jobs` in groups (`group_of`; nullptr: each job alone). A worker runs one group at a
+/// time in a process of its own: it prepares the group's shared part once (`prepare`: the
+/// case), then forks a child per job, one after the other, each stopped past the timeout and
+/// each a crash of its own, and sends each record as it ends. A group's process that hangs
+/// while preparing is stopped past the timeout (its jobs: status timeout), one that dies
+/// gives its unfinished jobs the status crash. Records are the same as `run_isolated`'s.
+ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFunction& group_of,
+                              const GroupFunction& prepare,
+                              const std::filesystem::path& records_path,
+                              const ProcessPoolOptions& options);
 
 /// The records in a records.jsonl file; lines that do not parse (a line cut short by an
 /// interruption) are skipped.

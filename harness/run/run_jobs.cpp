@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 namespace holebench::harness {
@@ -150,8 +151,23 @@ RunSummary run_jobs(const RunOptions& options) {
       const auto it = family_kind.find(id);
       return it != family_kind.end() ? it->second : std::pair<std::string, std::string>();
     };
+    // The jobs of one case instance (id, noise level, seed) share its making: their group
+    // makes it once and runs each job on it (in a child process of its own). The first job
+    // of a group carries the case's time in its "case" stage, the others 0.
+    const GroupKeyFunction case_instance = [](const Job& job) {
+      return fmt::format("{}|{}|{}", job.case_id, job.noise_percent, job.seed);
+    };
+    const GroupFunction prepare = [&job_options](const std::vector<Job>& group) -> JobFunction {
+      auto prepared =
+          std::make_shared<const PreparedCase>(prepare_case(group.front(), job_options));
+      const std::string first = group.front().id();
+      return [prepared, first, &job_options](const Job& job) {
+        return run_job_on_case(job, *prepared, job.id() == first ? prepared->seconds : 0.0,
+                               job_options);
+      };
+    };
     ProcessPoolResult result =
-        run_isolated(jobs, run_one, options.out_dir / "records.jsonl", runner);
+        run_grouped(jobs, case_instance, prepare, options.out_dir / "records.jsonl", runner);
     summary.records = std::move(result.records);
     summary.failures = result.failures;
   }

@@ -35,12 +35,16 @@ cat > "$work/shards.json" <<'JSON'
 JSON
 run_args=(run --suite "$work/part.json" --no-snapshots --workers 2)
 
-# Kills a process started with setsid (its group) and every job process it started (each
-# leads its own group), all with SIGKILL, the runner first.
+# Kills a process started with setsid (its group), every group process it started and every
+# job process those started (each leads its own group), all with SIGKILL, the runner first.
 kill_tree() {
   local pid="$1"
-  local children
-  children=$(ps -o pid= --ppid "$pid" 2>/dev/null || true)
+  local children groups
+  groups=$(ps -o pid= --ppid "$pid" 2>/dev/null || true)
+  children="$groups"
+  for group in $groups; do
+    children="$children $(ps -o pid= --ppid "$group" 2>/dev/null || true)"
+  done
   kill -KILL -- "-$pid" 2>/dev/null || true
   for child in $children; do
     kill -KILL -- "-$child" 2>/dev/null || kill -KILL "$child" 2>/dev/null || true

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -93,6 +94,118 @@ TEST(ProcessPool, SameRecordsWhateverTheNumberOfWorkers) {
     EXPECT_EQ(one.records[i].job.id(), three.records[i].job.id());
     EXPECT_EQ(one.records[i].metrics[0].value, three.records[i].metrics[0].value);
   }
+}
+
+// Jobs grouped by case: the case id is the group, the method id the job's behaviour, and the
+// group's preparation (which may crash or hang, by the case id) leaves a line in a file.
+std::vector<Job> grouped_jobs(const std::vector<std::pair<std::string, std::string>>& jobs) {
+  std::vector<Job> out;
+  for (const auto& [case_id, method] : jobs) {
+    Job job;
+    job.case_id = case_id;
+    job.method_id = method;
+    out.push_back(job);
+  }
+  return out;
+}
+
+GroupFunction counting_preparation(const std::filesystem::path& log) {
+  return [log](const std::vector<Job>& group) -> JobFunction {
+    if (group.front().case_id == "crash_while_preparing")
+      std::raise(SIGSEGV);
+    if (group.front().case_id == "hang_while_preparing")
+      std::this_thread::sleep_for(std::chrono::hours(1));
+    std::ofstream(log, std::ios::app) << group.front().case_id << " " << group.size() << "\n";
+    return [](const Job& job) {
+      Job as_case = job;
+      as_case.case_id = job.method_id;  // fake_job's behaviour by the method id
+      JobRecord record = fake_job(as_case);
+      record.job = job;
+      return record;
+    };
+  };
+}
+
+std::vector<std::string> lines_of(const std::filesystem::path& path) {
+  std::vector<std::string> lines;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+const GroupKeyFunction by_case = [](const Job& job) { return job.case_id; };
+
+TEST(ProcessPool, GroupsPrepareTheirCaseOnceAndGiveTheSameRecords) {
+  const auto jobs = grouped_jobs(
+      {{"p", "a"}, {"q", "bb"}, {"p", "ccc"}, {"q", "dddd"}, {"p", "eeeee"}, {"r", "f"}});
+  const auto log = fresh_file("preparations.txt");
+  ProcessPoolOptions options;
+  options.progress = false;
+  options.workers = 2;
+  const auto path = fresh_file("grouped.jsonl");
+  const auto grouped = run_grouped(jobs, by_case, counting_preparation(log), path, options);
+  // One preparation per case, with all of its jobs.
+  auto prepared = lines_of(log);
+  std::sort(prepared.begin(), prepared.end());
+  EXPECT_EQ(prepared, (std::vector<std::string>{"p 3", "q 2", "r 1"}));
+  ASSERT_EQ(grouped.records.size(), jobs.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    EXPECT_EQ(grouped.records[i].job.id(), jobs[i].id());
+    ASSERT_EQ(grouped.records[i].metrics.size(), 1u);
+    EXPECT_EQ(grouped.records[i].metrics[0].value, static_cast<double>(jobs[i].method_id.size()));
+  }
+  EXPECT_EQ(read_records_jsonl(path).size(), jobs.size());
+}
+
+// Each job of a group is still a process of its own: a crash, a hang or an escape is that
+// job's status, and the group's other jobs run.
+TEST(ProcessPool, AJobThatCrashesOrHangsInAGroupIsThatJobsStatusAlone) {
+  const auto jobs = grouped_jobs(
+      {{"p", "a"}, {"p", "crash"}, {"p", "hang"}, {"p", "throw"}, {"p", "bb"}, {"q", "ccc"}});
+  ProcessPoolOptions options;
+  options.progress = false;
+  options.workers = 2;
+  options.timeout_seconds = 1.0;
+  const auto path = fresh_file("group_statuses.jsonl");
+  const auto result =
+      run_grouped(jobs, by_case, counting_preparation(fresh_file("p.txt")), path, options);
+  ASSERT_EQ(result.records.size(), 6u);
+  EXPECT_EQ(result.records[0].status, JobStatus::Ok);
+  EXPECT_EQ(result.records[1].status, JobStatus::Crash);
+  EXPECT_NE(result.records[1].message.find("Segmentation"), std::string::npos);
+  EXPECT_EQ(result.records[2].status, JobStatus::Timeout);
+  EXPECT_EQ(result.records[3].status, JobStatus::Error);
+  EXPECT_EQ(result.records[4].status, JobStatus::Ok);
+  EXPECT_EQ(result.records[5].status, JobStatus::Ok);
+  EXPECT_EQ(result.failures, 3u);
+  EXPECT_EQ(read_records_jsonl(path).size(), 6u);
+}
+
+// A group's process that dies or hangs while making its case: each of its jobs gets a
+// record saying so, and the other groups run.
+TEST(ProcessPool, AGroupThatDiesOrHangsWhilePreparingGivesEachOfItsJobsARecord) {
+  const auto jobs = grouped_jobs({{"crash_while_preparing", "a"},
+                                  {"hang_while_preparing", "b"},
+                                  {"crash_while_preparing", "c"},
+                                  {"p", "dd"}});
+  ProcessPoolOptions options;
+  options.progress = false;
+  options.workers = 2;
+  options.timeout_seconds = 0.5;
+  options.group_stall_margin_seconds = 0.5;
+  const auto result = run_grouped(jobs, by_case, counting_preparation(fresh_file("d.txt")),
+                                  fresh_file("group_deaths.jsonl"), options);
+  ASSERT_EQ(result.records.size(), 4u);
+  for (std::size_t i : {0u, 2u}) {
+    EXPECT_EQ(result.records[i].status, JobStatus::Crash);
+    EXPECT_NE(result.records[i].message.find("making the job's case died"), std::string::npos)
+        << result.records[i].message;
+  }
+  EXPECT_EQ(result.records[1].status, JobStatus::Timeout);
+  EXPECT_NE(result.records[1].message.find("while making its case"), std::string::npos)
+      << result.records[1].message;
+  EXPECT_EQ(result.records[3].status, JobStatus::Ok);
 }
 
 // An interrupted run: the records file holds two finished jobs and a line cut short. With
