@@ -48,6 +48,12 @@ struct ProcessPoolOptions {
   /// run_grouped: a group's process that sends nothing for the timeout plus this long (it
   /// hangs while preparing its case; it stops its jobs' children itself) is stopped.
   double group_stall_margin_seconds = 30.0;
+  /// run_grouped: heap a job's process writes to before its job starts. A job forked from
+  /// its group's process shares that process's memory until it writes to it, and each first
+  /// write copies a page; a job that made its own case paid that while making it. Without
+  /// this, the method's time would carry it (the fandisk's median liepa_cgal time 15 ms
+  /// became 48 ms); 16 MiB brings it back (docs/reliability.md, "Jobs grouped by case").
+  std::size_t job_heap_warmup_bytes = 16u << 20;
 };
 
 struct ProcessPoolResult {
