@@ -123,7 +123,8 @@ Subcommand add_run_command(CLI::App& app) {
   run->add_flag("--resume", flags.resume,
                 "Keep the records already in DIR/records.jsonl and run the rest");
   run->add_option("--shard", values->shard_text,
-                  "Run only shard I of N (0 <= I < N): the suite's jobs i with i mod N = I, in "
+                  "Run only shard I of N (0 <= I < N): the suite's case instances g (case, noise, "
+                  "seed; in plan order) with g mod N = I, all their jobs, in "
                   "plan order; the N shards together are the suite, each job once (e.g. 0/4)")
       ->type_name("I/N")
       ->check(parsed_by(parse_shard, "I/N"));

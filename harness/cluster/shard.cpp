@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace holebench::harness {
 namespace {
@@ -45,16 +46,29 @@ std::string to_string(const ShardSpec& shard) {
   return std::to_string(shard.index) + "/" + std::to_string(shard.count);
 }
 
-std::size_t shard_of_job(std::size_t job_index, std::size_t shard_count) {
-  return job_index % shard_count;
+std::vector<std::size_t> shard_of_each(const std::vector<std::string>& case_instances,
+                                       std::size_t shard_count) {
+  std::unordered_map<std::string, std::size_t> instance_order;
+  std::vector<std::size_t> shards;
+  shards.reserve(case_instances.size());
+  for (const auto& instance : case_instances) {
+    const auto [it, added] = instance_order.try_emplace(instance, instance_order.size());
+    shards.push_back(it->second % shard_count);
+  }
+  return shards;
 }
 
 std::vector<Job> jobs_of_shard(const std::vector<Job>& plan, const ShardSpec& shard) {
   if (shard.count == 0 || shard.index >= shard.count)
     throw std::invalid_argument("shard " + to_string(shard) + " does not exist");
+  std::vector<std::string> instances;
+  instances.reserve(plan.size());
+  for (const auto& job : plan)
+    instances.push_back(job.case_instance());
+  const auto shards = shard_of_each(instances, shard.count);
   std::vector<Job> jobs;
   for (std::size_t i = 0; i < plan.size(); ++i) {
-    if (shard_of_job(i, shard.count) == shard.index)
+    if (shards[i] == shard.index)
       jobs.push_back(plan[i]);
   }
   return jobs;

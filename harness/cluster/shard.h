@@ -1,9 +1,11 @@
 // Shards: a deterministic 1/N slice of a run's jobs, so that N machines (or the N tasks of a
 // Slurm job array) together run a suite, each job exactly once.
 //
-// Job i of the plan (plan_jobs order, which depends only on the suite and the catalog, not on
-// the number of workers) belongs to shard i mod N. Shards are numbered 0 to N-1, like the
-// tasks of `sbatch --array=0-(N-1)`; shard I of N is written "I/N".
+// The plan's jobs (plan_jobs order, which depends only on the suite and the catalog, not on
+// the number of workers) are dealt to the shards by case instance (Job::case_instance: case
+// id, noise level and seed), so that a shard makes each of its cases once: the g-th case
+// instance to appear in the plan, with all its jobs, belongs to shard g mod N. Shards are
+// numbered 0 to N-1, like the tasks of `sbatch --array=0-(N-1)`; shard I of N is written "I/N".
 #pragma once
 
 #include "harness/run/job.h"
@@ -25,8 +27,10 @@ ShardSpec parse_shard(const std::string& text);
 /// "I/N".
 std::string to_string(const ShardSpec& shard);
 
-/// The shard job `job_index` of the plan belongs to, among `shard_count`.
-std::size_t shard_of_job(std::size_t job_index, std::size_t shard_count);
+/// The shard of each job of a plan, among `shard_count`, from the jobs' case instances in plan
+/// order (Job::case_instance): the g-th distinct instance goes to shard g mod shard_count.
+std::vector<std::size_t> shard_of_each(const std::vector<std::string>& case_instances,
+                                       std::size_t shard_count);
 
 /// The jobs of `shard`, in plan order.
 std::vector<Job> jobs_of_shard(const std::vector<Job>& plan, const ShardSpec& shard);

@@ -33,9 +33,14 @@ std::filesystem::path slurm_log_pattern(const std::filesystem::path& dir) {
 }
 
 std::vector<std::string> shard_job_ids(const ShardManifest& manifest, std::size_t index) {
+  std::vector<std::string> instances;
+  instances.reserve(manifest.job_ids.size());
+  for (const auto& id : manifest.job_ids)
+    instances.push_back(case_instance_of_job_id(id));
+  const auto shards = shard_of_each(instances, manifest.shard_count);
   std::vector<std::string> ids;
   for (std::size_t i = 0; i < manifest.job_ids.size(); ++i) {
-    if (shard_of_job(i, manifest.shard_count) == index)
+    if (shards[i] == index)
       ids.push_back(manifest.job_ids[i]);
   }
   return ids;

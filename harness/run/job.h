@@ -32,7 +32,13 @@ struct Job {
 
   /// Stable key used to match records across runs: "case_id|method_id|user|noise|seed".
   std::string id() const;
+  /// The case instance the job runs on, "case_id|noise|seed": the jobs that share it (every
+  /// method and user) share the making of the case (run_jobs.h) and a shard (shard.h).
+  std::string case_instance() const;
 };
+
+/// Job::case_instance of the job whose Job::id is `job_id` ("" where it has not five fields).
+std::string case_instance_of_job_id(const std::string& job_id);
 
 /// How a job ended. Everything but `Ok` carries a message.
 enum class JobStatus {

@@ -10,6 +10,24 @@ std::string Job::id() const {
   return fmt::format("{}|{}|{}|{}|{}", case_id, method_id, user, noise_percent, seed);
 }
 
+std::string Job::case_instance() const {
+  return fmt::format("{}|{}|{}", case_id, noise_percent, seed);
+}
+
+std::string case_instance_of_job_id(const std::string& job_id) {
+  std::vector<std::string> fields;
+  for (std::size_t start = 0;;) {
+    const auto bar = job_id.find('|', start);
+    fields.push_back(job_id.substr(start, bar - start));
+    if (bar == std::string::npos)
+      break;
+    start = bar + 1;
+  }
+  if (fields.size() != 5)
+    return "";
+  return fields[0] + "|" + fields[3] + "|" + fields[4];
+}
+
 const double* JobRecord::metric(const std::string& name) const {
   for (const auto& m : metrics) {
     if (m.name == name)

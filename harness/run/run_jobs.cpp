@@ -154,9 +154,7 @@ RunSummary run_jobs(const RunOptions& options) {
     // The jobs of one case instance (id, noise level, seed) share its making: their group
     // makes it once and runs each job on it (in a child process of its own). The first job
     // of a group carries the case's time in its "case" stage, the others 0.
-    const GroupKeyFunction case_instance = [](const Job& job) {
-      return fmt::format("{}|{}|{}", job.case_id, job.noise_percent, job.seed);
-    };
+    const GroupKeyFunction case_instance = [](const Job& job) { return job.case_instance(); };
     const GroupFunction prepare = [&job_options](const std::vector<Job>& group) -> JobFunction {
       auto prepared =
           std::make_shared<const PreparedCase>(prepare_case(group.front(), job_options));

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -57,18 +59,25 @@ TEST(Shard, UnionOfTheShardsIsThePlanEachJobOnce) {
   for (std::size_t count : {1u, 2u, 3u, 4u, 7u, 160u, 1000u}) {
     SCOPED_TRACE("N = " + std::to_string(count));
     std::map<std::string, int> seen;
+    std::map<std::string, std::set<std::size_t>> shards_of_instance;
     std::size_t smallest = plan.size(), largest = 0;
     for (std::size_t index = 0; index < count; ++index) {
       const auto jobs = jobs_of_shard(plan, {index, count});
-      smallest = std::min(smallest, jobs.size());
-      largest = std::max(largest, jobs.size());
-      for (const auto& job : jobs)
+      std::set<std::string> instances;
+      for (const auto& job : jobs) {
         ++seen[job.id()];
+        instances.insert(job.case_instance());
+        shards_of_instance[job.case_instance()].insert(index);
+      }
+      smallest = std::min(smallest, instances.size());
+      largest = std::max(largest, instances.size());
     }
     EXPECT_EQ(seen.size(), plan.size());
     for (const auto& job : plan)
       EXPECT_EQ(seen[job.id()], 1) << job.id();
-    EXPECT_LE(largest - smallest, 1u) << "the shards are balanced by job count";
+    for (const auto& [instance, shards] : shards_of_instance)
+      EXPECT_EQ(shards.size(), 1u) << instance << ": all its jobs in one shard";
+    EXPECT_LE(largest - smallest, 1u) << "the shards are balanced by case instances";
   }
 }
 
@@ -79,10 +88,24 @@ TEST(Shard, SlicingIsDeterministicAndFollowsPlanOrder) {
   const auto shard = jobs_of_shard(plan, {1, 4});
   const auto shard_again = jobs_of_shard(again, {1, 4});
   ASSERT_EQ(shard.size(), shard_again.size());
-  for (std::size_t i = 0; i < shard.size(); ++i) {
+  for (std::size_t i = 0; i < shard.size(); ++i)
     EXPECT_EQ(shard[i].id(), shard_again[i].id());
-    EXPECT_EQ(shard[i].id(), plan[1 + 4 * i].id()) << "job i of the plan goes to shard i mod N";
+  // The g-th case instance of the plan goes to shard g mod N, its jobs in plan order.
+  std::vector<std::string> instances;
+  std::vector<std::string> expected;
+  for (const auto& job : plan) {
+    if (std::find(instances.begin(), instances.end(), job.case_instance()) == instances.end())
+      instances.push_back(job.case_instance());
+    const auto g =
+        std::find(instances.begin(), instances.end(), job.case_instance()) - instances.begin();
+    if (g % 4 == 1)
+      expected.push_back(job.id());
   }
+  ASSERT_EQ(shard.size(), expected.size());
+  for (std::size_t i = 0; i < shard.size(); ++i)
+    EXPECT_EQ(shard[i].id(), expected[i]);
+  EXPECT_EQ(case_instance_of_job_id(plan[0].id()), plan[0].case_instance());
+  EXPECT_EQ(case_instance_of_job_id("a|b"), "");
   EXPECT_THROW(jobs_of_shard(plan, {4, 4}), std::invalid_argument);
 }
 
