@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/geometry.h"
+#include "core/split_text.h"
 #include "generators/box_holes.h"
 #include "generators/brep/brep_cases.h"
 #include "generators/crease_holes.h"
@@ -117,14 +118,7 @@ struct CaseCatalog::State {
 
   // Makes a case from its id alone: only the model it names is loaded.
   Case make_direct(const std::string& id) const {
-    std::vector<std::string> parts;
-    for (std::size_t start = 0;;) {
-      const auto slash = id.find('/', start);
-      parts.push_back(id.substr(start, slash - start));
-      if (slash == std::string::npos)
-        break;
-      start = slash + 1;
-    }
+    const std::vector<std::string> parts = split_text(id, '/');
     const std::string& family = parts[0];
     if (family == "box" && parts.size() == 2) {
       for (auto target :

@@ -2,6 +2,8 @@
 // statuses), apart from run_job, so that the results readers need nothing but this.
 #include "harness/run/job.h"
 
+#include "core/split_text.h"
+
 #include <fmt/format.h>
 
 namespace holebench::harness {
@@ -15,14 +17,7 @@ std::string Job::case_instance() const {
 }
 
 std::string case_instance_of_job_id(const std::string& job_id) {
-  std::vector<std::string> fields;
-  for (std::size_t start = 0;;) {
-    const auto bar = job_id.find('|', start);
-    fields.push_back(job_id.substr(start, bar - start));
-    if (bar == std::string::npos)
-      break;
-    start = bar + 1;
-  }
+  const std::vector<std::string> fields = split_text(job_id, '|');
   if (fields.size() != 5)
     return "";
   return fields[0] + "|" + fields[3] + "|" + fields[4];
