@@ -292,6 +292,32 @@ RayHit TriangleScene::intersect(const Point& origin, const Point& direction, dou
   return result;
 }
 
+void TriangleScene::intersect_coherent(const Point& origin, const std::vector<Point>& directions,
+                                       std::vector<RayHit>& hits) const {
+  std::vector<RTCRayHit> stream(directions.size());
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    stream[i].ray = make_ray(origin, directions[i], 0.0, std::numeric_limits<double>::infinity());
+    stream[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    stream[i].hit.primID = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect1M(scene_, &context, stream.data(), static_cast<unsigned>(stream.size()),
+                 sizeof(RTCRayHit));
+  hits.assign(directions.size(), RayHit{});
+  for (std::size_t i = 0; i < stream.size(); ++i) {
+    if (stream[i].hit.geomID == RTC_INVALID_GEOMETRY_ID)
+      continue;
+    hits[i].hit = true;
+    hits[i].distance = stream[i].ray.tfar;
+    hits[i].face = face_of_primitive_[stream[i].hit.primID];
+    const auto& tri = triangles_[stream[i].hit.primID];
+    const Point n = OpenMesh::cross(tri[1] - tri[0], tri[2] - tri[0]);
+    hits[i].normal = n / n.norm();
+  }
+}
+
 bool TriangleScene::occluded(const Point& origin, const Point& direction, double t_near,
                              double t_far) const {
   RTCIntersectContext context;

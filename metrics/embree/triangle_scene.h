@@ -72,6 +72,12 @@ class TriangleScene {
   RayHit intersect(const Point& origin, const Point& direction, double t_near = 0.0,
                    double t_far = std::numeric_limits<double>::infinity()) const;
 
+  /// intersect() for many rays from one origin (a camera's primary rays), as one stream that
+  /// Embree traces as coherent rays: the same hits, faster. hits[i] is the first face along
+  /// directions[i] (not necessarily unit); `hits` is resized to the rays' count.
+  void intersect_coherent(const Point& origin, const std::vector<Point>& directions,
+                          std::vector<RayHit>& hits) const;
+
   /// Whether anything blocks the ray within (t_near, t_far).
   bool occluded(const Point& origin, const Point& direction, double t_near = 0.0,
                 double t_far = std::numeric_limits<double>::infinity()) const;

@@ -39,6 +39,40 @@ TEST(TriangleScene, RaysHitTheFrontFaceAndOcclusionAgrees) {
   EXPECT_FALSE(scene.intersect(Point(5, 5, 5), Point(1, 0, 0)).hit);
 }
 
+// A camera's rays traced as one coherent stream hit what the same rays traced one by one hit,
+// at the same distance, and the misses miss. Where a ray meets the edge between two triangles
+// the two may name either: the face named lies on the ray at that distance.
+TEST(TriangleScene, CoherentRaysHitWhatSingleRaysHit) {
+  const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  const TriangleScene scene(box);
+  const Point eye(1.1, 0.9, 6.0);
+  std::vector<Point> directions;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 40; ++x)
+      directions.push_back(Point((x - 20) * 0.0317, (y - 20) * 0.0291, -1.0));
+  std::vector<RayHit> hits;
+  scene.intersect_coherent(eye, directions, hits);
+  ASSERT_EQ(hits.size(), directions.size());
+  std::size_t hit_count = 0, ties = 0;
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    const RayHit one = scene.intersect(eye, directions[i]);
+    ASSERT_EQ(hits[i].hit, one.hit) << i;
+    hit_count += one.hit;
+    if (!one.hit)
+      continue;
+    EXPECT_EQ(hits[i].distance, one.distance) << i;
+    const Point at = eye + directions[i] / directions[i].norm() * hits[i].distance;
+    const auto& t = scene.triangle_of_face(hits[i].face);
+    EXPECT_LT((closest_point_on_triangle(at, t[0], t[1], t[2]) - at).norm(), 1e-5) << i;
+    if (hits[i].face == one.face)
+      EXPECT_EQ(hits[i].normal, one.normal) << i;
+    ties += hits[i].face != one.face;
+  }
+  EXPECT_LT(ties, hit_count / 10) << "only rays through an edge may name another face";
+  EXPECT_GT(hit_count, 100u);
+  EXPECT_LT(hit_count, directions.size());  // some rays pass the box
+}
+
 // faces_within against a brute-force count; with a limit, the same faces or nothing when
 // more than the limit are within the radius.
 TEST(TriangleScene, FacesWithinARadiusAndTheirLimit) {

@@ -71,14 +71,18 @@ Overlay hole_overlay(const Mesh& holed, double normal_length) {
     }
   }
   // One normal per region next to a hole, at the mean of its faces along the hole.
+  // Point() leaves its coordinates uninitialised (OpenMesh): each sum starts at zero.
   std::map<int, Point> normal_sum;
-  for (auto f : holed.faces())
-    normal_sum[region(holed, f)] += face_normal(holed, f) * face_area(holed, f);
+  for (auto f : holed.faces()) {
+    normal_sum.try_emplace(region(holed, f), 0.0, 0.0, 0.0).first->second +=
+        face_normal(holed, f) * face_area(holed, f);
+  }
   for (const auto& [id, entry] : near_hole) {
-    if (id == kNoRegion || normal_sum[id].norm() == 0.0)
+    const auto sum = normal_sum.find(id);
+    if (id == kNoRegion || sum == normal_sum.end() || sum->second.norm() == 0.0)
       continue;
     const Point base = entry.first / entry.second;
-    const Point n = normal_sum[id] / normal_sum[id].norm();
+    const Point n = sum->second / sum->second.norm();
     overlay.lines.push_back({base, base + n * normal_length, black, 2.0f});
   }
   return overlay;

@@ -37,7 +37,8 @@ RemovedSurface removed_surface(const Case& c, std::size_t hole_index) {
     const FaceHandle f = complete.face_handle(index);
     const Point n = face_normal(complete, f) * face_area(complete, f);
     out.normal += n;
-    by_region[region(complete, f)] += n;
+    // Point() leaves its coordinates uninitialised (OpenMesh): each sum starts at zero.
+    by_region.try_emplace(region(complete, f), 0.0, 0.0, 0.0).first->second += n;
   }
   for (const auto& [id, n] : by_region) {
     if (n.norm() > 0.0)

@@ -183,6 +183,19 @@ Point eye_of(const Camera& camera) {
   return camera.target - camera.direction / camera.direction.norm() * camera.distance;
 }
 
+PrimaryRays primary_rays(const Camera& camera, const SnapshotOptions& options) {
+  const View view(camera, options.width, options.height);
+  const int n = std::max(1, options.samples_per_axis);
+  PrimaryRays rays{view.eye, {}};
+  rays.directions.reserve(static_cast<std::size_t>(options.width) * options.height * n * n);
+  for (int y = 0; y < options.height; ++y)
+    for (int x = 0; x < options.width; ++x)
+      for (int sy = 0; sy < n; ++sy)
+        for (int sx = 0; sx < n; ++sx)
+          rays.directions.push_back(view.ray(x + (sx + 0.5) / n, y + (sy + 0.5) / n));
+  return rays;
+}
+
 Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options,
                       const Overlay& overlay) {
   return render_with_depth(mesh, camera, options, overlay).image;
@@ -212,48 +225,55 @@ Rendering render_with_depth(const Mesh& mesh, const Camera& camera, const Snapsh
   std::vector<double> depth(static_cast<std::size_t>(options.width) * options.height,
                             std::numeric_limits<double>::infinity());
 
+  // One row at a time: its rays (n x n per pixel) traced as one coherent stream.
+  const std::size_t per_pixel = static_cast<std::size_t>(n) * n;
+  std::vector<Point> directions(per_pixel * options.width);
+  std::vector<embree::RayHit> hits, solid_hits;
   for (int y = 0; y < options.height; ++y) {
+    for (int x = 0; x < options.width; ++x)
+      for (int sy = 0; sy < n; ++sy)
+        for (int sx = 0; sx < n; ++sx)
+          directions[per_pixel * x + sy * n + sx] =
+              view.ray(x + (sx + 0.5) / n, y + (sy + 0.5) / n);
+    scene.intersect_coherent(view.eye, directions, hits);
+    if (solid_scene)
+      solid_scene->intersect_coherent(view.eye, directions, solid_hits);
     for (int x = 0; x < options.width; ++x) {
       Rgb sum;
-      for (int sy = 0; sy < n; ++sy) {
-        for (int sx = 0; sx < n; ++sx) {
-          const Point direction = view.ray(x + (sx + 0.5) / n, y + (sy + 0.5) / n);
-          const auto hit = scene.intersect(view.eye, direction);
-          const auto solid_hit =
-              solid_scene ? solid_scene->intersect(view.eye, direction) : embree::RayHit{};
-          Rgb colour;
-          if (solid_hit.hit && (!hit.hit || solid_hit.distance < hit.distance)) {
-            auto& d = depth[static_cast<std::size_t>(y) * options.width + x];
-            d = std::min(d, solid_hit.distance);
-            const double facing =
-                std::abs(OpenMesh::dot(solid_hit.normal, direction / direction.norm()));
-            const float light = static_cast<float>(0.3 + 0.7 * facing);
-            const Rgb& base = solid_colour[solid_hit.face];
-            colour = {base.r * light, base.g * light, base.b * light};
-          } else if (!hit.hit) {
-            // A soft vertical gradient as background.
-            const float t = static_cast<float>(1.0 - static_cast<double>(y) / options.height);
-            colour = {0.93f - 0.12f * t, 0.94f - 0.10f * t, 0.96f - 0.05f * t};
-          } else {
-            auto& d = depth[static_cast<std::size_t>(y) * options.width + x];
-            d = std::min(d, hit.distance);  // t along the unit ray: the distance
-            const FaceHandle f = mesh.face_handle(hit.face);
-            const double facing = -OpenMesh::dot(hit.normal, direction / direction.norm());
-            const float light = static_cast<float>(0.25 + 0.75 * std::abs(facing));
-            Rgb base = is_new(mesh, f) ? patch_colour() : region_colour(region(mesh, f));
-            if (options.colouring) {
-              if (const auto own =
-                      options.colouring(f, view.eye + direction / direction.norm() * hit.distance))
-                base = *own;
-            }
-            if (facing < 0.0)
-              base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
-            colour = {base.r * light, base.g * light, base.b * light};
+      for (std::size_t k = per_pixel * x; k < per_pixel * (x + 1); ++k) {
+        const Point unit = directions[k] / directions[k].norm();
+        const embree::RayHit& hit = hits[k];
+        const embree::RayHit solid_hit = solid_scene ? solid_hits[k] : embree::RayHit{};
+        Rgb colour;
+        if (solid_hit.hit && (!hit.hit || solid_hit.distance < hit.distance)) {
+          auto& d = depth[static_cast<std::size_t>(y) * options.width + x];
+          d = std::min(d, solid_hit.distance);
+          const double facing = std::abs(OpenMesh::dot(solid_hit.normal, unit));
+          const float light = static_cast<float>(0.3 + 0.7 * facing);
+          const Rgb& base = solid_colour[solid_hit.face];
+          colour = {base.r * light, base.g * light, base.b * light};
+        } else if (!hit.hit) {
+          // A soft vertical gradient as background.
+          const float t = static_cast<float>(1.0 - static_cast<double>(y) / options.height);
+          colour = {0.93f - 0.12f * t, 0.94f - 0.10f * t, 0.96f - 0.05f * t};
+        } else {
+          auto& d = depth[static_cast<std::size_t>(y) * options.width + x];
+          d = std::min(d, hit.distance);  // t along the unit ray: the distance
+          const FaceHandle f = mesh.face_handle(hit.face);
+          const double facing = -OpenMesh::dot(hit.normal, unit);
+          const float light = static_cast<float>(0.25 + 0.75 * std::abs(facing));
+          Rgb base = is_new(mesh, f) ? patch_colour() : region_colour(region(mesh, f));
+          if (options.colouring) {
+            if (const auto own = options.colouring(f, view.eye + unit * hit.distance))
+              base = *own;
           }
-          sum.r += colour.r;
-          sum.g += colour.g;
-          sum.b += colour.b;
+          if (facing < 0.0)
+            base = {0.35f, 0.08f, 0.12f};  // the inside, seen through a hole
+          colour = {base.r * light, base.g * light, base.b * light};
         }
+        sum.r += colour.r;
+        sum.g += colour.g;
+        sum.b += colour.b;
       }
       const float w = 1.0f / static_cast<float>(n * n);
       image.set(x, y, {sum.r * w, sum.g * w, sum.b * w});

@@ -94,6 +94,15 @@ std::optional<Projection> project(const Camera& camera, int width, int height, c
 /// The camera's eye (target - direction * distance).
 Point eye_of(const Camera& camera);
 
+/// The primary rays a snapshot casts: from the camera's eye, samples_per_axis^2 per pixel,
+/// pixel by pixel, row by row (the directions are not of unit length). For benchmarks that
+/// compare the renderer with raw ray casting on the same rays.
+struct PrimaryRays {
+  Point eye;
+  std::vector<Point> directions;
+};
+PrimaryRays primary_rays(const Camera& camera, const SnapshotOptions& options = {});
+
 /// The colour of region `id` (a fixed palette, the same in every picture).
 Rgb region_colour(int id);
 /// The colour of new faces (the patch).

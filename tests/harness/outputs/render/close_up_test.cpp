@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
+#include <memory>
+#include <vector>
 
 namespace holebench::render {
 namespace {
@@ -128,6 +131,37 @@ TEST(CloseUp, InnerCornerHoleIsSeenFromOutside) {
 
 // A job's picture: a close-up and the whole model (view_size each, 4 pixels apart) and the
 // colour bar; the patch of a cap over the corner shows the heat map's colours.
+// Leaves freed heap memory filled with `byte`, where the next small allocations may land.
+void dirty_the_heap(unsigned char byte) {
+  std::vector<std::unique_ptr<unsigned char[]>> blocks;
+  for (int i = 0; i < 4096; ++i) {
+    blocks.emplace_back(new unsigned char[64]);
+    std::memset(blocks.back().get(), byte, 64);
+  }
+}
+
+// The camera of a close-up depends on the case alone. It once summed the region normals into
+// map entries whose Point() was uninitialised (OpenMesh), and on this corner case the chosen
+// view changed from run to run, with the heap's leftovers: the same job gave other pictures.
+TEST(CloseUp, CameraDependsOnTheCaseAloneNotOnTheHeap) {
+  const Case c =
+      generators::make_case("brep/k3/outer/reflex-reflex-reflex/inner-inner-inner/large");
+  ASSERT_GE(c.holes.size(), 2u);
+  for (std::size_t hole = 0; hole < c.holes.size(); ++hole) {
+    dirty_the_heap(0x00);
+    const HoleView clean = hole_view(c, hole);
+    for (unsigned char byte : {0x40, 0xc0, 0x3f}) {  // 32.5, -8577.5, 4.8e-4 as doubles
+      dirty_the_heap(byte);
+      const HoleView again = hole_view(c, hole);
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(again.camera.direction[k], clean.camera.direction[k])
+            << "hole " << hole << ", heap byte " << int(byte);
+      }
+      EXPECT_EQ(again.visible_share, clean.visible_share);
+    }
+  }
+}
+
 TEST(CloseUp, JobPictureHasTheViewsAndTheColourBar) {
   const Case c = generators::make_case("box/corner");
   MethodResult nothing;
