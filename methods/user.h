@@ -15,8 +15,8 @@ namespace holebench {
 
 /// What a method proposes for one hole before closing it automatically.
 struct ClosingProposal {
-  int hole_index = 0;   ///< index of the hole in the method's detection order
-  Point hole_centroid;  ///< where the hole is, so that an oracle can find its ground truth
+  int hole_index = 0;            ///< index of the hole in the method's detection order
+  Point hole_centroid{0, 0, 0};  ///< where the hole is, so that an oracle can find its ground truth
   double hole_size = 0.0;
 };
 
@@ -27,9 +27,9 @@ struct ClosingProposal {
 /// (positions are snapped to the nearest boundary vertex by the method), re-pair them and
 /// name or clear the corner triple.
 struct FeaturePointProposal {
-  int hole_index = 0;           ///< index of the hole in the method's detection order
-  Point hole_centroid;          ///< where the hole is, so that an oracle can find its ground truth
-  std::vector<Point> boundary;  ///< the hole's boundary vertices, in loop order
+  int hole_index = 0;            ///< index of the hole in the method's detection order
+  Point hole_centroid{0, 0, 0};  ///< where the hole is, so that an oracle can find its ground truth
+  std::vector<Point> boundary;   ///< the hole's boundary vertices, in loop order
   std::vector<Point> feature_points;         ///< on the boundary (each one of `boundary`)
   std::vector<std::array<int, 2>> pairs;     ///< indices into feature_points
   std::optional<std::array<int, 3>> corner;  ///< indices into feature_points
@@ -48,9 +48,9 @@ struct FeaturePointProposal {
 /// control points P0 and P3 of equation 3 and a corner's meeting point). A user may replace
 /// any direction; an empty or zero answer keeps the method's.
 struct CrestLineProposal {
-  int hole_index = 0;           ///< index of the hole in the method's detection order
-  Point hole_centroid;          ///< where the hole is, so that an oracle can find its ground truth
-  std::vector<Point> boundary;  ///< the hole's boundary vertices, in loop order
+  int hole_index = 0;            ///< index of the hole in the method's detection order
+  Point hole_centroid{0, 0, 0};  ///< where the hole is, so that an oracle can find its ground truth
+  std::vector<Point> boundary;   ///< the hole's boundary vertices, in loop order
   std::vector<Point> feature_points;  ///< the feature points (after review_feature_points)
   std::vector<Point> directions;  ///< per feature point: the crest line's direction into the hole
 };

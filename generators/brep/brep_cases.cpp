@@ -144,7 +144,7 @@ Case make_ball_case(const Recipe& recipe, const BallSpec& spec, bool large) {
   HoleLabels labels;
   HoleTruth truth;
   truth.target = recipe.target;
-  Point edge_a, edge_b;
+  Point edge_a(0, 0, 0), edge_b(0, 0, 0);
   switch (spec.target) {
     case Target::Face:
       labels.regions = {face_containing(polyhedron, spec.center)};

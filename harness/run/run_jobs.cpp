@@ -10,6 +10,7 @@
 #include "methods/registry.h"
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <chrono>
@@ -17,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 namespace holebench::harness {
 
@@ -117,6 +119,11 @@ ProcessPoolOptions runner_options_of(const RunOptions& options) {
   return runner;
 }
 
+int threads_per_job_of(int workers) {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return std::max(1, cores / (workers > 0 ? workers : cores));
+}
+
 RunSummary run_jobs(const RunOptions& options) {
   const auto start = SteadyClock::now();
   const OutputFolderLock lock(options.out_dir);  // one run per folder, until this returns
@@ -155,11 +162,17 @@ RunSummary run_jobs(const RunOptions& options) {
     // makes it once and runs each job on it (in a child process of its own). The first job
     // of a group carries the case's time in its "case" stage, the others 0.
     const GroupKeyFunction case_instance = [](const Job& job) { return job.case_instance(); };
-    const GroupFunction prepare = [&job_options](const std::vector<Job>& group) -> JobFunction {
+    // A job's threads (the evaluation's parallel searches, Embree's builds): the cores shared
+    // among the workers, so that the workers do not take turns on the same cores.
+    const int threads_per_job = threads_per_job_of(runner.workers);
+    const GroupFunction prepare = [&job_options,
+                                   threads_per_job](const std::vector<Job>& group) -> JobFunction {
       auto prepared =
           std::make_shared<const PreparedCase>(prepare_case(group.front(), job_options));
       const std::string first = group.front().id();
-      return [prepared, first, &job_options](const Job& job) {
+      return [prepared, first, &job_options, threads_per_job](const Job& job) {
+        const tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                                          static_cast<std::size_t>(threads_per_job));
         return run_job_on_case(job, *prepared, job.id() == first ? prepared->seconds : 0.0,
                                job_options);
       };

@@ -53,6 +53,10 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
 /// `cad_data_dir` and `prepare`, limited to the families of the suite's case patterns.
 generators::CatalogOptions run_catalog_options(const RunOptions& options);
 
+/// The threads one job may use when `workers` (0: one per core) run at once: the cores shared
+/// among them, at least one.
+int threads_per_job_of(int workers);
+
 /// The process pool's options: workers, resume and progress from `options`, the timeout and
 /// memory limit of each job from its suite.
 ProcessPoolOptions runner_options_of(const RunOptions& options);

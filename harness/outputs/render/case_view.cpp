@@ -60,7 +60,7 @@ Overlay hole_overlay(const Mesh& holed, double normal_length) {
       if (i < loop.size()) {
         overlay.lines.push_back({holed.point(holed.from_vertex_handle(h)),
                                  holed.point(holed.to_vertex_handle(h)), red, 3.0f});
-        auto& entry = near_hole[id];
+        auto& entry = near_hole.try_emplace(id, Point(0, 0, 0), 0.0).first->second;
         entry.first += face_centroid(holed, face);
         entry.second += 1.0;
       }

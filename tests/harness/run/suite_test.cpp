@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <thread>
 
 namespace holebench::harness {
 namespace {
@@ -142,6 +144,19 @@ TEST(Suite, TheMemoryLimitIsReadWithItsUnitAndDefaultsToFourGibibytes) {
   RunOptions options;
   options.suite = load_suite("smoke");
   EXPECT_EQ(runner_options_of(options).memory_limit_bytes, 4 * kGibibyte);
+}
+
+// The workers share the cores: each job's threads times the workers never exceed the cores,
+// and a job always has at least one thread.
+TEST(Suite, JobsShareTheCoresAmongTheWorkers) {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  EXPECT_EQ(threads_per_job_of(1), cores);
+  EXPECT_EQ(threads_per_job_of(0), 1);  // 0 workers: one per core
+  for (int workers = 1; workers <= 2 * cores + 1; ++workers) {
+    EXPECT_GE(threads_per_job_of(workers), 1) << workers;
+    if (workers <= cores)
+      EXPECT_LE(threads_per_job_of(workers) * workers, cores) << workers;
+  }
 }
 
 }  // namespace
