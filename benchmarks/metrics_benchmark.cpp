@@ -1,6 +1,7 @@
 // Benchmarks of the metrics' kernels (distances, closest points, arrow visibility), the
-// snapshot renderer and each method on fixed cases, beside the CGAL references the issue
-// compares with. Every fixture is generated (same id, same bytes), so runs compare.
+// snapshot renderer, the stages of a job and the grouped runner, and each method on fixed cases,
+// beside the CGAL references the issue compares with. Every fixture is generated (same id, same
+// bytes), so runs compare.
 //
 // Run: holebench_benchmarks --benchmark_format=json > benchmarks.json
 #include "core/geometry.h"
@@ -8,9 +9,11 @@
 #include "generators/case_catalog.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/render/snapshot.h"
+#include "harness/run/job.h"
 #include "methods/registry.h"
 #include "metrics/embree/arrow_visibility.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/evaluation.h"
 #include "metrics/hausdorff_distance.h"
 #include "metrics/surface_distance.h"
 
@@ -24,6 +27,7 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -332,6 +336,70 @@ const char* method_case(int index) {
                               "cad/fandisk/edge_convex/small"};
   return ids[index];
 }
+
+// The stages of a job around the method, on the same fixed cases, at 0 and 25 % noise: making
+// the case (stages_s.case) and evaluating a method's result (stages_s.evaluation; liepa_cgal's
+// result, metrics as the nightly computes them).
+void BM_Stage_Case(benchmark::State& state) {
+  const double noise = static_cast<double>(state.range(1));
+  state.SetLabel(fmt::format("{} noise {}", method_case(state.range(0)), noise));
+  for (auto _ : state) {
+    const Case c = generators::make_case(method_case(state.range(0)), 0, noise);
+    benchmark::DoNotOptimize(c.input.n_faces());
+  }
+}
+BENCHMARK(BM_Stage_Case)->ArgsProduct({{0, 1, 2}, {0, 25}})->Unit(benchmark::kMillisecond);
+
+void BM_Stage_Evaluation(benchmark::State& state) {
+  const double noise = static_cast<double>(state.range(1));
+  state.SetLabel(fmt::format("{} noise {}", method_case(state.range(0)), noise));
+  const Case c = generators::make_case(method_case(state.range(0)), 0, noise);
+  MethodParameters parameters;
+  parameters.structure_size = c.parameters.structure_size;
+  NoUser user;
+  const MethodResult result = make_method("liepa_cgal")->run(c.input, parameters, user);
+  for (auto _ : state) {
+    const Evaluation evaluation = evaluate(c, result);
+    benchmark::DoNotOptimize(evaluation.values.size());
+  }
+}
+BENCHMARK(BM_Stage_Evaluation)->ArgsProduct({{0, 1, 2}, {0, 25}})->Unit(benchmark::kMillisecond);
+
+// The five nightly methods on one case instance (fandisk edge hole, 25 % noise), in this
+// process and without snapshots: each job making its own case (run_job, as one process per
+// job did) against the case made once for the group (prepare_case + run_job_on_case, as the
+// grouped runner does). The process forks are not in these times.
+std::vector<harness::Job> nightly_jobs_of_one_case() {
+  std::vector<harness::Job> jobs;
+  for (const char* method :
+       {"liepa_cgal", "brep_guidance", "slice_loft", "slice_direct", "crest_feature"}) {
+    harness::Job job;
+    job.case_id = "cad/fandisk/edge_convex/small";
+    job.method_id = method;
+    job.noise_percent = 25.0;
+    jobs.push_back(job);
+  }
+  return jobs;
+}
+
+void BM_Runner_OneCasePerJob(benchmark::State& state) {
+  const auto jobs = nightly_jobs_of_one_case();
+  for (auto _ : state) {
+    for (const auto& job : jobs)
+      benchmark::DoNotOptimize(harness::run_job(job, {}).status);
+  }
+}
+BENCHMARK(BM_Runner_OneCasePerJob)->Unit(benchmark::kMillisecond);
+
+void BM_Runner_OneCasePerGroup(benchmark::State& state) {
+  const auto jobs = nightly_jobs_of_one_case();
+  for (auto _ : state) {
+    const harness::PreparedCase prepared = harness::prepare_case(jobs.front(), {});
+    for (const auto& job : jobs)
+      benchmark::DoNotOptimize(harness::run_job_on_case(job, prepared, 0.0, {}).status);
+  }
+}
+BENCHMARK(BM_Runner_OneCasePerGroup)->Unit(benchmark::kMillisecond);
 
 void BM_Method(benchmark::State& state, const std::string& method_id) {
   const Case c = generators::make_case(method_case(state.range(0)));

@@ -56,6 +56,9 @@ struct HoleTruth {
   std::vector<std::vector<Point>> missing_edges;  ///< sharp edges lost, as polylines
   std::vector<Point> missing_corners;             ///< corners lost
   std::optional<HoleLabels> labels;               ///< where CASES.md labels apply
+  /// Where a punched hole carries no labels: why not (its regions, its loops), so that a
+  /// listing says which holes fall outside the taxonomy; empty otherwise.
+  std::string unlabelled_because;
 };
 
 /// Parameters of the experiment that a method may be given (they are settings a user of

@@ -13,7 +13,9 @@ std::string labels_summary(const Case& c) {
     if (!text.empty())
       text += "; ";
     if (!hole.labels) {
-      text += hole.target + " (no labels)";
+      text += hole.target + (hole.unlabelled_because.empty()
+                                 ? std::string(" (no labels)")
+                                 : " (no labels: " + hole.unlabelled_because + ")");
       continue;
     }
     const auto& l = *hole.labels;

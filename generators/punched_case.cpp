@@ -7,6 +7,8 @@
 #include "generators/missing_sharp_edges.h"
 #include "generators/random.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -95,12 +97,15 @@ std::vector<int> select_faces(const Mesh& mesh, VertexHandle target, const Frame
 }
 
 // The labels, where the hole is one loop along planar regions whose missing part lies in
-// those regions (inner by construction).
+// those regions (inner by construction); otherwise none, and `why` says which condition failed.
 std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchResult& punched,
-                                        const HoleTruth& truth, const PunchedCaseOptions& options) {
+                                        const HoleTruth& truth, const PunchedCaseOptions& options,
+                                        std::string& why) {
   const auto loops = find_boundary_loops(punched.holed);
-  if (loops.size() != 1)
+  if (loops.size() != 1) {
+    why = fmt::format("{} boundary loops", loops.size());
     return std::nullopt;
+  }
   const Mesh& holed = punched.holed;
   const Mesh& complete = model.mesh;
   HoleLabels labels;
@@ -128,10 +133,18 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
   // Now transition_vertices[i] is where the loop passes from regions[i] to regions[i + 1].
   labels.k = static_cast<int>(labels.regions.size());
   std::set<int> loop_regions(labels.regions.begin(), labels.regions.end());
-  for (int f : truth.removed_faces) {
-    const int id = region(complete, complete.face_handle(f));
-    if (!loop_regions.count(id) || !model.region_is_planar[id])
-      return std::nullopt;
+  const auto removed_face_on = [&](const auto& region_test) {
+    return std::any_of(truth.removed_faces.begin(), truth.removed_faces.end(), [&](int f) {
+      return region_test(region(complete, complete.face_handle(f)));
+    });
+  };
+  if (removed_face_on([&](int id) { return !model.region_is_planar[id]; })) {
+    why = "a removed face lies on a curved region";
+    return std::nullopt;
+  }
+  if (removed_face_on([&](int id) { return !loop_regions.count(id); })) {
+    why = "a removed face lies on a region the loop does not cross";
+    return std::nullopt;
   }
   // Convexity at a transition: the sharp edge of the complete model at the transition
   // vertex between the two regions (that very edge: at a corner other sharp edges meet the
@@ -152,8 +165,10 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
         if ((a == from && b == to) || (a == to && b == from))
           convexity = model.features.edge_convexity[e.idx()];
       }
-      if (!convexity)
+      if (!convexity) {
+        why = "no sharp edge between two regions where the loop passes from one to the other";
         return std::nullopt;
+      }
       labels.transitions.push_back(*convexity);
     }
   }
@@ -218,7 +233,9 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
   truth.missing_edges = missing_sharp_edges(mesh, removed, FeatureChainEdges{model.features});
   truth.missing_corners = missing_corners(mesh, removed, model.features);
   if (target.kind != "island")
-    truth.labels = planar_labels(model, punched, truth, options);
+    truth.labels = planar_labels(model, punched, truth, options, truth.unlabelled_because);
+  else
+    truth.unlabelled_because = "an island (two boundary loops) is outside the taxonomy";
   c.holes.push_back(std::move(truth));
   c.input = punched.holed;
   if (!options.keep_input_regions) {

@@ -9,6 +9,12 @@
 #include "tests/generators/label_geometry.h"
 
 #include <gtest/gtest.h>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
 
 #include <array>
 #include <fstream>
@@ -60,6 +66,32 @@ TEST(BrepFileCases, StepPartsArePunchedAndBadStepFilesSkipped) {
   ASSERT_EQ(a.input.n_vertices(), b.input.n_vertices());
   for (auto v : a.input.vertices())
     EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
+}
+
+// An open shell (a box with one face missing: a surface model, not a solid) is skipped with
+// its reason, and the part beside it still gives its cases.
+TEST(BrepFileCases, AnOpenShellIsSkippedWithItsReason) {
+  const auto dir = occt::test::fresh_temp_dir("brep_file_open_shell");
+  occt::test::write_step(occt::test::block_with_pocket_and_hole(), dir / "block.step");
+  TopoDS_Shell open_box;
+  BRep_Builder builder;
+  builder.MakeShell(open_box);
+  int faces = 0;
+  for (TopExp_Explorer face(BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape(), TopAbs_FACE); face.More();
+       face.Next()) {
+    if (faces++ > 0)  // every face but the first
+      builder.Add(open_box, TopoDS::Face(face.Current()));
+  }
+  ASSERT_TRUE(BRepTools::Write(open_box, (dir / "open_box.brep").c_str()));
+  const CaseCatalog catalog(user_files_only(dir));
+  ASSERT_EQ(catalog.skipped().size(), 1u);
+  EXPECT_EQ(catalog.skipped()[0].name, "file/open_box");
+  EXPECT_EQ(catalog.skipped()[0].reason,
+            (dir / "open_box.brep").string() +
+                ": the mesh is open (1 boundary loops); holes are punched into closed models only");
+  EXPECT_FALSE(catalog.cases().empty());
+  for (const auto& c : catalog.cases())
+    EXPECT_EQ(c.id.rfind("file/block/", 0), 0u) << c.id;
 }
 
 // The input of a hole punched into a B-Rep file keeps the B-Rep's face ids (the B-Rep

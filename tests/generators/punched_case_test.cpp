@@ -55,6 +55,30 @@ TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
   EXPECT_GE(checked, 12);
 }
 
+// A punched hole has labels or says why not, and the reason is the construction's: the
+// curved faces of the cylinder and the cone, the island's two loops.
+TEST(PunchedCases, AHoleWithoutLabelsSaysWhy) {
+  const CaseCatalog catalog(no_cad());
+  int curved = 0;
+  for (const auto& descriptor : catalog.cases()) {
+    if (descriptor.family != "solid")
+      continue;
+    SCOPED_TRACE(descriptor.id);
+    const Case c = catalog.make(descriptor.id);
+    ASSERT_EQ(c.holes.size(), 1u);
+    const HoleTruth& hole = c.holes[0];
+    EXPECT_NE(hole.labels.has_value(), !hole.unlabelled_because.empty());
+    if (descriptor.kind == "island") {
+      EXPECT_EQ(hole.unlabelled_because, "an island (two boundary loops) is outside the taxonomy");
+    }
+    if (descriptor.kind == "curved_face") {
+      EXPECT_EQ(hole.unlabelled_because, "a removed face lies on a curved region");
+      ++curved;
+    }
+  }
+  EXPECT_GE(curved, 4);  // the cylinder's and the cone's, small and large
+}
+
 // Every punched case of the procedural solids against what its target kind promises.
 TEST(PunchedCases, ProceduralSolidHolesMatchTheirTargets) {
   const CaseCatalog catalog(no_cad());

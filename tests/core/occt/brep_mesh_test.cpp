@@ -9,6 +9,7 @@
 #include "tests/core/occt/test_parts.h"
 
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -24,8 +25,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -244,6 +247,41 @@ TEST(BrepMesh, BadFilesGiveAOneLineErrorNamingTheFile) {
     const std::string message = read_error(file.path);
     EXPECT_NE(message.find(file.path.string() + ": "), std::string::npos) << message;
     EXPECT_NE(message.find(file.says), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Two bad inputs that a real corpus holds: a file cut short, a file with no solid (a lone
+// edge). Each is a one-line error that names the file and what is wrong. (An open shell
+// reads; the catalog refuses it: BrepFileCases.AnOpenShellIsSkippedWithItsReason.)
+TEST(BrepMesh, TruncatedFilesAndShapesWithoutFacesAreRefused) {
+  const auto dir = test::fresh_temp_dir("brep_mesh_bad_shapes");
+  test::write_step(test::block_with_pocket_and_hole(), dir / "whole.step");
+  std::string bytes;
+  {
+    std::ifstream in(dir / "whole.step", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::ofstream(dir / "truncated.step", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  test::write_step(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge(),
+                   dir / "edge_only.step");
+
+  struct BadFile {
+    std::string name;
+    std::vector<std::string> says_one_of;
+  };
+  const std::vector<BadFile> bad = {
+      {"truncated.step", {"not a readable STEP file (OpenCASCADE read status: fail"}},
+      {"edge_only.step", {"no faces (the file holds no solid, shell or face)"}},
+  };
+  for (const auto& file : bad) {
+    SCOPED_TRACE(file.name);
+    const std::string message = read_error(dir / file.name);
+    EXPECT_EQ(message.rfind((dir / file.name).string() + ": ", 0), 0u) << message;
+    EXPECT_TRUE(
+        std::any_of(file.says_one_of.begin(), file.says_one_of.end(),
+                    [&](const std::string& s) { return message.find(s) != std::string::npos; }))
+        << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
 }
