@@ -378,6 +378,10 @@ ProcessPoolResult run_isolated(const std::vector<Job>& jobs, const JobFunction& 
   return run_grouped(jobs, nullptr, prepare, records_path, alone);
 }
 
+int worker_count_of(int workers) {
+  return workers > 0 ? workers : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFunction& group_of,
                               const GroupFunction& prepare,
                               const std::filesystem::path& records_path,
@@ -423,9 +427,7 @@ ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFuncti
       groups.emplace_back();
     groups[it->second].push_back(i);
   }
-  const int workers = options.workers > 0
-                          ? options.workers
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int workers = worker_count_of(options.workers);
   Progress progress(jobs.size(), result.resumed, options.progress);
   std::size_t finished = result.resumed;
   std::size_t failures = 0;

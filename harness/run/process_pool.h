@@ -65,6 +65,9 @@ struct ProcessPoolResult {
 
 using JobFunction = std::function<JobRecord(const Job&)>;
 
+/// The processes that run at once for `workers`: itself, or one per core when 0.
+int worker_count_of(int workers);
+
 /// The group of a job: jobs with the same key share what `GroupFunction` prepares.
 using GroupKeyFunction = std::function<std::string(const Job&)>;
 

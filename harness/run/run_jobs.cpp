@@ -18,7 +18,6 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
 namespace holebench::harness {
 
@@ -120,8 +119,7 @@ ProcessPoolOptions runner_options_of(const RunOptions& options) {
 }
 
 int threads_per_job_of(int workers) {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return std::max(1, cores / (workers > 0 ? workers : cores));
+  return std::max(1, worker_count_of(0) / worker_count_of(workers));
 }
 
 RunSummary run_jobs(const RunOptions& options) {
@@ -162,17 +160,19 @@ RunSummary run_jobs(const RunOptions& options) {
     // makes it once and runs each job on it (in a child process of its own). The first job
     // of a group carries the case's time in its "case" stage, the others 0.
     const GroupKeyFunction case_instance = [](const Job& job) { return job.case_instance(); };
-    // A job's threads (the evaluation's parallel searches, Embree's builds): the cores shared
-    // among the workers, so that the workers do not take turns on the same cores.
+    // A group's threads (making the case, the evaluation's parallel searches, Embree's
+    // builds): the cores shared among the workers, so that the workers do not take turns on
+    // the same cores. The limit is set in the group's process and held by its job function,
+    // so it covers the making of the case and every job forked from it.
     const int threads_per_job = threads_per_job_of(runner.workers);
     const GroupFunction prepare = [&job_options,
                                    threads_per_job](const std::vector<Job>& group) -> JobFunction {
+      auto threads = std::make_shared<const tbb::global_control>(
+          tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads_per_job));
       auto prepared =
           std::make_shared<const PreparedCase>(prepare_case(group.front(), job_options));
       const std::string first = group.front().id();
-      return [prepared, first, &job_options, threads_per_job](const Job& job) {
-        const tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
-                                          static_cast<std::size_t>(threads_per_job));
+      return [threads, prepared, first, &job_options](const Job& job) {
         return run_job_on_case(job, *prepared, job.id() == first ? prepared->seconds : 0.0,
                                job_options);
       };
