@@ -1,6 +1,7 @@
 #include "core/features.h"
 
 #include "core/geometry.h"
+#include "core/plane_fit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,19 +75,31 @@ SharpEdgeChain trace_chain(const Mesh& mesh, VertexHandle start, EdgeHandle firs
 }
 
 // The mesh's own region ids as a segmentation; sharp edges are the region borders whose
-// dihedral angle exceeds the segmentation's threshold.
-SegmentationResult regions_of_mesh(const Mesh& mesh, const SegmentationOptions& options) {
-  const double threshold = options.sharp_angle_degrees * M_PI / 180.0;
+// dihedral angle exceeds the segmentation's threshold, or the planar threshold where both
+// regions are planar (plane fit residual below 1e-6 of the diagonal).
+SegmentationResult regions_of_mesh(const Mesh& mesh, const FeatureOptions& options) {
+  const double threshold = options.segmentation.sharp_angle_degrees * M_PI / 180.0;
+  const double planar_threshold = options.planar_sharp_angle_degrees * M_PI / 180.0;
   SegmentationResult result;
   result.face_region.assign(mesh.n_faces(), kNoRegion);
   for (auto f : mesh.faces())
     result.face_region[f.idx()] = region(mesh, f);
   result.region_count = region_count(mesh);
+  const auto planes = fit_region_planes(mesh);
+  const double flat = 1e-6 * bounding_box_diagonal(mesh);
+  const auto planar = [&](int r) {
+    return r >= 0 && r < static_cast<int>(planes.size()) && planes[r].valid &&
+           planes[r].plane.rms_residual < flat;
+  };
   for (auto e : mesh.edges()) {
-    if (!e.is_boundary() && region(mesh, e.h0().face()) != region(mesh, e.h1().face()) &&
-        std::abs(signed_dihedral_angle(mesh, e)) > threshold) {
+    if (e.is_boundary())
+      continue;
+    const int a = region(mesh, e.h0().face()), b = region(mesh, e.h1().face());
+    if (a == b)
+      continue;
+    const double limit = planar(a) && planar(b) ? planar_threshold : threshold;
+    if (std::abs(signed_dihedral_angle(mesh, e)) > limit)
       result.sharp_edges.push_back(e);
-    }
   }
   return result;
 }
@@ -95,7 +108,7 @@ SegmentationResult regions_of_mesh(const Mesh& mesh, const SegmentationOptions& 
 
 FeatureAnalysis analyse_features(const Mesh& mesh, const FeatureOptions& options) {
   FeatureAnalysis analysis;
-  analysis.segmentation = options.regions_from_mesh ? regions_of_mesh(mesh, options.segmentation)
+  analysis.segmentation = options.regions_from_mesh ? regions_of_mesh(mesh, options)
                                                     : segment_regions(mesh, options.segmentation);
   analysis.edge_is_sharp.assign(mesh.n_edges(), 0);
   analysis.edge_convexity.assign(mesh.n_edges(), Convexity::Convex);

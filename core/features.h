@@ -32,8 +32,15 @@ struct FeatureOptions {
   SegmentationOptions segmentation;  ///< regions and sharp edges come from this
   /// Take the regions from the mesh's region ids (e.g. B-Rep faces) instead of segmenting;
   /// sharp edges are then the borders between two regions whose dihedral angle exceeds
-  /// segmentation.sharp_angle_degrees (a tangent border, as along a fillet, is not sharp).
+  /// segmentation.sharp_angle_degrees (a tangent border, as along a fillet, is not sharp), or
+  /// planar_sharp_angle_degrees between two planar regions.
   bool regions_from_mesh = false;
+  /// With regions_from_mesh: a border between two planar regions is sharp where their
+  /// dihedral angle exceeds this (degrees). Two planes meet tangentially only where they are
+  /// one plane, so a draft of a few degrees between two planar B-Rep faces is an edge of the
+  /// model, where a curved face's border needs the larger threshold above (its facets meet
+  /// the next face at an angle that depends on the tessellation).
+  double planar_sharp_angle_degrees = 0.1;
 };
 
 struct FeatureAnalysis {

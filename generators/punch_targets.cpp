@@ -1,5 +1,6 @@
 #include "generators/punch_targets.h"
 
+#include "core/coplanar_regions.h"
 #include "core/geometry.h"
 #include "core/plane_fit.h"
 
@@ -24,6 +25,9 @@ AnalysedModel analyse_model(std::string name, Mesh mesh, const FeatureOptions& o
     model.region_is_planar[r] =
         planes[r].valid && planes[r].plane.rms_residual < 1e-6 * model.diagonal;
   }
+  CoplanarRegionsOptions coplanar;
+  coplanar.distance = 1e-6 * model.diagonal;
+  model.coplanar_group = coplanar_region_groups(mesh, planes, model.region_is_planar, coplanar);
   model.mesh = std::move(mesh);
   return model;
 }

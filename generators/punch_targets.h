@@ -18,10 +18,19 @@ struct AnalysedModel {
   FeatureAnalysis features;
   double diagonal = 0.0;
   std::vector<char> region_is_planar;  ///< per region: plane fit residual below 1e-6 diag
+  /// per region: the smallest region id of the planar regions that share an edge and lie in
+  /// one plane with it (core/coplanar_regions.h); empty: every region is its own face.
+  std::vector<int> coplanar_group;
   /// The regions are the faces of a B-Rep model (a STEP, IGES or BREP file), not a
   /// segmentation: holes punched into it keep them in the input, as the B-Rep paper's
   /// input carries its faces.
   bool regions_are_brep_faces = false;
+
+  /// The face of the hole taxonomy that region `id` belongs to: coplanar regions that meet
+  /// (a planar B-Rep face split in two) are one face.
+  int taxonomy_face(int id) const {
+    return id >= 0 && id < static_cast<int>(coplanar_group.size()) ? coplanar_group[id] : id;
+  }
 };
 
 /// Segments `mesh`, assigns its region ids and analyses its features.

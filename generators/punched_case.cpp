@@ -96,14 +96,20 @@ std::vector<int> select_faces(const Mesh& mesh, VertexHandle target, const Frame
   return faces;
 }
 
-// The labels, where the hole is one loop along planar regions whose missing part lies in
+// Why a punched hole has no labels, where a smaller hole at the same target may have them.
+enum class LabelFailure { None, SeveralLoops, FaceInsideTheHole, Other };
+
+// The labels, where the hole is one loop along planar regions (coplanar regions that meet
+// counted as one face: AnalysedModel::taxonomy_face) whose missing part lies in
 // those regions (inner by construction); otherwise none, and `why` says which condition failed.
 std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchResult& punched,
                                         const HoleTruth& truth, const PunchedCaseOptions& options,
-                                        std::string& why) {
+                                        std::string& why, LabelFailure& failure) {
+  failure = LabelFailure::Other;
   const auto loops = find_boundary_loops(punched.holed);
   if (loops.size() != 1) {
     why = fmt::format("{} boundary loops", loops.size());
+    failure = LabelFailure::SeveralLoops;
     return std::nullopt;
   }
   const Mesh& holed = punched.holed;
@@ -112,7 +118,7 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
   std::vector<VertexHandle> transition_vertices;
   for (std::size_t i = 0; i < loops[0].size(); ++i) {
     const auto h = loops[0].halfedges[i];
-    const int id = region(holed, holed.opposite_face_handle(h));
+    const int id = model.taxonomy_face(region(holed, holed.opposite_face_handle(h)));
     if (labels.regions.empty() || labels.regions.back() != id) {
       labels.regions.push_back(id);
       transition_vertices.push_back(holed.from_vertex_handle(h));
@@ -142,8 +148,9 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
     why = "a removed face lies on a curved region";
     return std::nullopt;
   }
-  if (removed_face_on([&](int id) { return !loop_regions.count(id); })) {
+  if (removed_face_on([&](int id) { return !loop_regions.count(model.taxonomy_face(id)); })) {
     why = "a removed face lies on a region the loop does not cross";
+    failure = LabelFailure::FaceInsideTheHole;
     return std::nullopt;
   }
   // Convexity at a transition: the sharp edge of the complete model at the transition
@@ -160,8 +167,8 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
         const auto e = complete.edge_handle(h);
         if (!model.features.edge_is_sharp[e.idx()] || complete.is_boundary(e))
           continue;
-        const int a = region(complete, complete.face_handle(h));
-        const int b = region(complete, complete.opposite_face_handle(h));
+        const int a = model.taxonomy_face(region(complete, complete.face_handle(h)));
+        const int b = model.taxonomy_face(region(complete, complete.opposite_face_handle(h)));
         if ((a == from && b == to) || (a == to && b == from))
           convexity = model.features.edge_convexity[e.idx()];
       }
@@ -204,40 +211,76 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
   labels.expected_decision = labels.k <= 3 && size < labels.structure_size
                                  ? Decision::CloseAutomatically
                                  : Decision::Guide;
+  failure = LabelFailure::None;
   return labels;
+}
+
+}  // namespace
+
+namespace {
+
+// One punch at `radius`: the holed mesh and the hole's ground truth.
+struct Punch {
+  PunchResult punched;
+  HoleTruth truth;
+  bool cuts_through = false;  ///< several boundary loops, or a whole face of the model removed
+};
+
+Punch punch_at(const AnalysedModel& model, const PunchTarget& target,
+               const PunchedCaseOptions& options, const IrregularRadius& outer) {
+  const Mesh& mesh = model.mesh;
+  const double inner_ratio = target.kind == "island" ? options.island_ratio : 0.0;
+  Punch punch;
+  punch.punched = punch_faces(
+      mesh, select_faces(mesh, target.vertex, frame_at(mesh, target.vertex), outer, inner_ratio));
+  HoleTruth& truth = punch.truth;
+  truth.target = target.kind;
+  truth.removed_faces = punch.punched.removed_faces;
+  std::vector<char> removed(mesh.n_faces(), 0);
+  for (int f : truth.removed_faces)
+    removed[f] = 1;
+  truth.missing_edges = missing_sharp_edges(mesh, removed, FeatureChainEdges{model.features});
+  truth.missing_corners = missing_corners(mesh, removed, model.features);
+  if (target.kind == "island") {
+    truth.unlabelled_because = "an island (two boundary loops) is outside the taxonomy";
+    return punch;
+  }
+  LabelFailure failure = LabelFailure::None;
+  truth.labels =
+      planar_labels(model, punch.punched, truth, options, truth.unlabelled_because, failure);
+  punch.cuts_through =
+      failure == LabelFailure::SeveralLoops || failure == LabelFailure::FaceInsideTheHole;
+  return punch;
 }
 
 }  // namespace
 
 Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
                        const PunchedCaseOptions& options) {
-  const Mesh& mesh = model.mesh;
   Random random(options.shape_seed);
-  const double radius = std::max(options.radius_rel_diag * model.diagonal, target.min_radius);
-  const IrregularRadius outer{radius, options.irregularity, random.uniform(0.0, 2.0 * M_PI),
-                              random.uniform(0.0, 2.0 * M_PI)};
-  const double inner_ratio = target.kind == "island" ? options.island_ratio : 0.0;
-  const Frame frame = frame_at(mesh, target.vertex);
-  const PunchResult punched =
-      punch_faces(mesh, select_faces(mesh, target.vertex, frame, outer, inner_ratio));
+  IrregularRadius outer{std::max(options.radius_rel_diag * model.diagonal, target.min_radius),
+                        options.irregularity, random.uniform(0.0, 2.0 * M_PI),
+                        random.uniform(0.0, 2.0 * M_PI)};
+  Punch punch = punch_at(model, target, options, outer);
+  // A hole that cuts through a thin part (several loops) or takes a whole face away is
+  // outside the taxonomy: punched again, smaller, while it stays at least min_radius. The
+  // same shape (phases), only the radius changes, so the case is still one id's alone.
+  for (int step = 0; step < options.shrink_steps && punch.cuts_through; ++step) {
+    const double radius = outer.radius * options.shrink_factor;
+    if (radius < target.min_radius)
+      break;
+    outer.radius = radius;
+    Punch smaller = punch_at(model, target, options, outer);
+    if (smaller.punched.removed_faces.empty())
+      break;
+    punch = std::move(smaller);
+  }
 
   Case c;
-  c.complete = mesh;
+  c.complete = model.mesh;
   c.kind = target.kind;
-  HoleTruth truth;
-  truth.target = target.kind;
-  truth.removed_faces = punched.removed_faces;
-  std::vector<char> removed(mesh.n_faces(), 0);
-  for (int f : truth.removed_faces)
-    removed[f] = 1;
-  truth.missing_edges = missing_sharp_edges(mesh, removed, FeatureChainEdges{model.features});
-  truth.missing_corners = missing_corners(mesh, removed, model.features);
-  if (target.kind != "island")
-    truth.labels = planar_labels(model, punched, truth, options, truth.unlabelled_because);
-  else
-    truth.unlabelled_because = "an island (two boundary loops) is outside the taxonomy";
-  c.holes.push_back(std::move(truth));
-  c.input = punched.holed;
+  c.holes.push_back(std::move(punch.truth));
+  c.input = std::move(punch.punched.holed);
   if (!options.keep_input_regions) {
     for (auto f : c.input.faces())
       set_region(c.input, f, kNoRegion);

@@ -18,13 +18,20 @@ struct PunchedCaseOptions {
   /// false: the input has no region ids (a scan); true: it keeps the model's regions (the
   /// faces of a B-Rep file: the B-Rep paper's input).
   bool keep_input_regions = false;
+  /// A hole that cuts through a thin part (several boundary loops) or removes a whole face
+  /// of the model is punched again with its radius times shrink_factor, up to shrink_steps
+  /// times (an island excepted).
+  double shrink_factor = 0.8;
+  int shrink_steps = 6;
 };
 
 /// Removes the faces around `target` (an irregular disc on the surface, grown only through
 /// faces connected to the target, so that thin parts are not cut through; an annulus for
 /// "island") and records the ground truth: removed faces, missing sharp edges as polylines
 /// (sharp edges with both faces removed), missing corners (corners with every face
-/// removed), and the labels of CASES.md where the hole runs along planar regions only.
+/// removed), and the labels of CASES.md where the hole runs along planar regions only. A
+/// hole that would cut through a thin part or take a whole face away is made smaller
+/// (PunchedCaseOptions::shrink_factor), so that it is one hole of the taxonomy.
 Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
                        const PunchedCaseOptions& options);
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 namespace holebench {
@@ -53,6 +54,40 @@ TEST(Features, RegionsFromTheMeshWithAFlatBorderKeepTheBoxsFeatures) {
     EXPECT_EQ(chain.convexity, Convexity::Convex);
   EXPECT_EQ(signature_counts(analysis), (std::map<std::string, int>{{"ccc", 8}}));
   EXPECT_EQ(analyse_features(box).segmentation.region_count, 6);  // segmentation merges them
+}
+
+// Regions from the mesh: two planar faces meeting at a shallow angle (a draft) are an edge
+// of the model, though the angle is below the segmentation's 30 degrees. The box's top, split
+// at x = 1, is bent into a valley of 12 degrees: one reflex chain more, and the valley's ends
+// on the two side faces are corners with two convex and one reflex edge.
+TEST(Features, PlanarRegionsFromTheMeshMeetingAtAShallowAngleAreSharp) {
+  Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  for (auto f : box.faces()) {
+    const Point c = box.calc_face_centroid(f);
+    if (c[2] > 0.99 && c[0] < 1.0)
+      set_region(box, f, 6);
+  }
+  const double slope = std::tan(6.0 * M_PI / 180.0);
+  for (auto v : box.vertices()) {
+    Point p = box.point(v);
+    if (p[2] > 0.99) {
+      p[2] = 1.0 + slope * std::abs(p[0] - 1.0);
+      box.set_point(v, p);
+    }
+  }
+  FeatureOptions options;
+  options.regions_from_mesh = true;
+  const auto analysis = analyse_features(box, options);
+  int reflex = 0;
+  for (const auto& chain : analysis.chains)
+    reflex += chain.convexity == Convexity::Reflex ? 1 : 0;
+  EXPECT_EQ(reflex, 1);
+  EXPECT_EQ(signature_counts(analysis), (std::map<std::string, int>{{"ccc", 8}, {"ccr", 2}}));
+  // The same border between a curved and a planar region would need 30 degrees: with the
+  // planar threshold raised to 30 degrees as well, the valley is no edge.
+  options.planar_sharp_angle_degrees = 30.0;
+  EXPECT_EQ(signature_counts(analyse_features(box, options)),
+            (std::map<std::string, int>{{"ccc", 8}}));
 }
 
 // The notched block ([0,2]^3 without [1,2]^3): the notch's inner corner (1,1,1) has three

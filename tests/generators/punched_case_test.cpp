@@ -55,6 +55,34 @@ TEST(PunchedCases, LabelsAgreeWithTheGeometry) {
   EXPECT_GE(checked, 12);
 }
 
+// A rod 0.02 thick and 2 long: the edge hole's nominal radius (2 % of the diagonal, 0.04) is
+// twice the rod's width, so the disc would cut the rod through (two boundary loops). The hole
+// is punched again smaller until it is one hole across the edge, labelled, the labels agree
+// with the meshes, and the same target gives the same hole.
+TEST(PunchedCases, AHoleThatWouldCutThroughAThinRodIsMadeSmaller) {
+  const AnalysedModel rod = analyse_model("rod", make_box({Point(2.0, 0.02, 0.02), 0.005}));
+  const auto targets = find_punch_targets(rod);
+  const auto edge = std::find_if(targets.begin(), targets.end(),
+                                 [](const PunchTarget& t) { return t.kind == "edge_convex"; });
+  ASSERT_NE(edge, targets.end());
+  PunchedCaseOptions options;
+  options.shrink_steps = 0;
+  const Case cut = make_punched_case(rod, *edge, options);
+  EXPECT_GE(find_boundary_loops(cut.input).size(), 2u);
+  EXPECT_FALSE(cut.holes[0].labels.has_value());
+
+  options = PunchedCaseOptions{};
+  const Case c = make_punched_case(rod, *edge, options);
+  const auto loops = find_boundary_loops(c.input);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_TRUE(c.holes[0].labels.has_value()) << c.holes[0].unlabelled_because;
+  EXPECT_GE(c.holes[0].labels->k, 2);  // across the edge, perhaps around a third face
+  EXPECT_LT(c.holes[0].removed_faces.size(), cut.holes[0].removed_faces.size());
+  label_geometry::expect_punched_labels_agree(c, loops[0]);
+  const Case again = make_punched_case(rod, *edge, options);
+  EXPECT_EQ(again.holes[0].removed_faces, c.holes[0].removed_faces);
+}
+
 // A punched hole has labels or says why not, and the reason is the construction's: the
 // curved faces of the cylinder and the cone, the island's two loops.
 TEST(PunchedCases, AHoleWithoutLabelsSaysWhy) {
