@@ -10,15 +10,24 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Plane.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Pln.hxx>
 
 #include <gtest/gtest.h>
 
@@ -284,6 +293,35 @@ TEST(BrepMesh, TruncatedFilesAndShapesWithoutFacesAreRefused) {
         << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
+}
+
+// A face that does not tessellate: a planar face bounded by a wire of zero area (an edge
+// there and back), beside a box, in a BREP file (STEP would not keep it). The error is one
+// line naming the file and the face, and the read does not crash.
+TEST(BrepMesh, AFaceThatDoesNotTessellateIsNamed) {
+  const auto dir = test::fresh_temp_dir("brep_mesh_untessellated_face");
+  const gp_Pnt a(3, 0, 0), b(4, 0, 0);
+  const TopoDS_Vertex va = BRepBuilderAPI_MakeVertex(a), vb = BRepBuilderAPI_MakeVertex(b);
+  const TopoDS_Edge there = BRepBuilderAPI_MakeEdge(va, vb);
+  const TopoDS_Edge back = BRepBuilderAPI_MakeEdge(vb, va);
+  BRep_Builder builder;
+  TopoDS_Wire wire;
+  builder.MakeWire(wire);
+  builder.Add(wire, there);
+  builder.Add(wire, back);
+  TopoDS_Face sliver;
+  builder.MakeFace(sliver, new Geom_Plane(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1))), 1e-7);
+  builder.Add(sliver, wire);
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  builder.Add(compound, BRepPrimAPI_MakeBox(1.0, 1.0, 1.0).Shape());
+  builder.Add(compound, sliver);
+  const auto file = dir / "sliver.brep";
+  ASSERT_TRUE(BRepTools::Write(compound, file.string().c_str()));
+  const std::string message = read_error(file);
+  EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("B-Rep face 6 did not tessellate"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
 TEST(BrepMesh, BrepFileExtensionsAnyCase) {
