@@ -1,7 +1,10 @@
 #include "core/coplanar_regions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <set>
+#include <utility>
 
 namespace holebench {
 namespace {
@@ -25,32 +28,41 @@ bool in_one_plane(const PlaneFit& a, const PlaneFit& b, const CoplanarRegionsOpt
 
 }  // namespace
 
-std::vector<int> coplanar_region_groups(const Mesh& mesh, const std::vector<PlaneFit>& planes,
-                                        const std::vector<char>& region_is_planar,
-                                        const CoplanarRegionsOptions& options) {
-  const int count = static_cast<int>(planes.size());
-  std::vector<int> parent(count);
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto planar = [&](int r) {
-    return r >= 0 && r < count && r < static_cast<int>(region_is_planar.size()) &&
-           region_is_planar[r];
-  };
+std::vector<int> unite_neighbouring_regions(const Mesh& mesh, int region_count,
+                                            const std::function<bool(int, int)>& same) {
+  std::set<std::pair<int, int>> neighbours;
   for (auto e : mesh.edges()) {
     if (mesh.is_boundary(e))
       continue;
     const auto h = mesh.halfedge_handle(e, 0);
     const int a = region(mesh, mesh.face_handle(h));
     const int b = region(mesh, mesh.opposite_face_handle(h));
-    if (a == b || !planar(a) || !planar(b))
-      continue;
+    if (a != b && a >= 0 && b >= 0 && a < region_count && b < region_count)
+      neighbours.insert({std::min(a, b), std::max(a, b)});
+  }
+  std::vector<int> parent(region_count);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [a, b] : neighbours) {
     const int ra = find_root(parent, a), rb = find_root(parent, b);
-    if (ra != rb && in_one_plane(planes[a], planes[b], options))
+    if (ra != rb && same(a, b))
       parent[std::max(ra, rb)] = std::min(ra, rb);
   }
-  std::vector<int> group(count);
-  for (int r = 0; r < count; ++r)
+  std::vector<int> group(region_count);
+  for (int r = 0; r < region_count; ++r)
     group[r] = find_root(parent, r);
   return group;
+}
+
+std::vector<int> coplanar_region_groups(const Mesh& mesh, const std::vector<PlaneFit>& planes,
+                                        const std::vector<char>& region_is_planar,
+                                        const CoplanarRegionsOptions& options) {
+  const int count = static_cast<int>(planes.size());
+  const auto planar = [&](int r) {
+    return r < static_cast<int>(region_is_planar.size()) && region_is_planar[r];
+  };
+  return unite_neighbouring_regions(mesh, count, [&](int a, int b) {
+    return planar(a) && planar(b) && in_one_plane(planes[a], planes[b], options);
+  });
 }
 
 }  // namespace holebench

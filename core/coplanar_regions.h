@@ -5,6 +5,7 @@
 #include "core/mesh.h"
 #include "core/plane_fit.h"
 
+#include <functional>
 #include <vector>
 
 namespace holebench {
@@ -15,6 +16,12 @@ struct CoplanarRegionsOptions {
   double angle_radians = 1e-3;
   double distance = 0.0;  ///< absolute; callers pass a fraction of the diagonal
 };
+
+/// For each region id 0 .. region_count - 1, the smallest region id of its group: regions that
+/// share an edge and for which `same(a, b)` holds (a < b; asked once per neighbouring pair,
+/// unless the two are already in one group), closed transitively.
+std::vector<int> unite_neighbouring_regions(const Mesh& mesh, int region_count,
+                                            const std::function<bool(int, int)>& same);
 
 /// For each region id of `mesh`, the smallest region id of its coplanar group: planar regions
 /// (`region_is_planar`, by region id) that share an edge and lie in one plane, closed

@@ -24,8 +24,27 @@ enum class FaceSource {
   Segmentation,
 };
 
+struct UniteCoplanarOptions {
+  /// Two neighbouring faces are one where a single plane fits both with an rms residual at
+  /// most residual_ratio times the larger of their own, plus residual_floor_rel_diag of the
+  /// diagonal: coplanar faces fit one plane as well as each alone (noise included), faces
+  /// meeting at an angle do not.
+  double residual_ratio = 1.25;
+  double residual_floor_rel_diag = 1e-6;
+  double max_normal_angle_degrees = 30.0;  ///< normals further apart are never one face
+};
+
+/// For each input region, its face: neighbouring regions that one plane fits are one face
+/// (a planar B-Rep face split in two where bodies were fused: one face of the model, as the
+/// hole taxonomy counts faces). A face is named by its smallest region id, so an input without
+/// such neighbours keeps its ids, and new triangles take an id of the input. `planes`:
+/// fit_region_planes.
+std::vector<int> unite_coplanar_faces(const Mesh& mesh, const std::vector<PlaneFit>& planes,
+                                      const UniteCoplanarOptions& options = {});
+
 /// The input's region ids where every triangle has one and `source` allows it (B-Rep
-/// cases, and cases punched into B-Rep files); otherwise planar region growing
+/// cases, and cases punched into B-Rep files), coplanar neighbours united
+/// (unite_coplanar_faces); otherwise planar region growing
 /// (core/planar_segmentation.h), which is robust to vertex noise because it compares each
 /// triangle with its region's fitted plane, not with its neighbours.
 BrepFaces extract_brep_faces(const Mesh& mesh, const PlanarSegmentationOptions& options = {},
