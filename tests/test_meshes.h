@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/mesh_builder.h"
+#include "generators/box_solid.h"
 
 #include <cmath>
 
@@ -75,6 +76,26 @@ inline Mesh displaced(const Mesh& mesh, double amplitude) {
         amplitude;
   }
   return out;
+}
+
+/// A 2 x 1.5 x 1 box (cells of 0.25, regions 0..5 as make_box numbers them) whose top is split
+/// at x = 1 into regions 5 (x > 1) and 6 (x < 1), as fusing bodies splits a face, the two
+/// halves bent into a valley of `valley_degrees` (0: one plane).
+inline Mesh box_with_split_top(double valley_degrees) {
+  Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
+  for (auto f : box.faces()) {
+    if (box.calc_face_centroid(f)[2] > 0.99 && box.calc_face_centroid(f)[0] < 1.0)
+      set_region(box, f, 6);
+  }
+  const double slope = std::tan(0.5 * valley_degrees * M_PI / 180.0);
+  for (auto v : box.vertices()) {
+    Point p = box.point(v);
+    if (p[2] > 0.99) {
+      p[2] = 1.0 + slope * std::abs(p[0] - 1.0);
+      box.set_point(v, p);
+    }
+  }
+  return box;
 }
 
 }  // namespace holebench::test

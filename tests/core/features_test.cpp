@@ -2,6 +2,7 @@
 
 #include "generators/box_solid.h"
 #include "generators/procedural_solids.h"
+#include "tests/test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -61,20 +62,7 @@ TEST(Features, RegionsFromTheMeshWithAFlatBorderKeepTheBoxsFeatures) {
 // at x = 1, is bent into a valley of 12 degrees: one reflex chain more, and the valley's ends
 // on the two side faces are corners with two convex and one reflex edge.
 TEST(Features, PlanarRegionsFromTheMeshMeetingAtAShallowAngleAreSharp) {
-  Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
-  for (auto f : box.faces()) {
-    const Point c = box.calc_face_centroid(f);
-    if (c[2] > 0.99 && c[0] < 1.0)
-      set_region(box, f, 6);
-  }
-  const double slope = std::tan(6.0 * M_PI / 180.0);
-  for (auto v : box.vertices()) {
-    Point p = box.point(v);
-    if (p[2] > 0.99) {
-      p[2] = 1.0 + slope * std::abs(p[0] - 1.0);
-      box.set_point(v, p);
-    }
-  }
+  const Mesh box = test::box_with_split_top(12.0);
   FeatureOptions options;
   options.regions_from_mesh = true;
   const auto analysis = analyse_features(box, options);

@@ -3,7 +3,6 @@
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "core/plane_fit.h"
-#include "generators/box_solid.h"
 #include "generators/case_catalog.h"
 #include "methods/brep_guidance/brep_faces.h"
 #include "methods/brep_guidance/exact_closing.h"
@@ -701,39 +700,20 @@ INSTANTIATE_TEST_SUITE_P(
 namespace holebench {
 namespace {
 
-// A box whose top (region 5) is split at x = 1 into regions 5 and 6, as fusing bodies splits
-// a face; `valley_degrees` bends the two halves into a valley of that angle.
-Mesh box_with_split_top(double valley_degrees) {
-  Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
-  for (auto f : box.faces()) {
-    if (box.calc_face_centroid(f)[2] > 0.99 && box.calc_face_centroid(f)[0] < 1.0)
-      set_region(box, f, 6);
-  }
-  const double slope = std::tan(0.5 * valley_degrees * M_PI / 180.0);
-  for (auto v : box.vertices()) {
-    Point p = box.point(v);
-    if (p[2] > 0.99) {
-      p[2] = 1.0 + slope * std::abs(p[0] - 1.0);
-      box.set_point(v, p);
-    }
-  }
-  return box;
-}
-
 // The two halves of a split face are one face of the B-Rep, named by the smaller id, with or
 // without vertex noise; a valley of 3 degrees keeps them two faces, and the other five
 // faces keep their ids.
 TEST(BrepFaces, CoplanarNeighboursAreOneFaceAndABendIsNot) {
   for (const double noise : {0.0, 0.002}) {
     SCOPED_TRACE("noise " + std::to_string(noise));
-    const Mesh split = test::displaced(box_with_split_top(0.0), noise);
+    const Mesh split = test::displaced(test::box_with_split_top(0.0), noise);
     const auto faces = brep_guidance::unite_coplanar_faces(split, fit_region_planes(split));
     EXPECT_EQ(faces, (std::vector<int>{0, 1, 2, 3, 4, 5, 5}));
   }
-  const Mesh bent = box_with_split_top(3.0);
+  const Mesh bent = test::box_with_split_top(3.0);
   EXPECT_EQ(brep_guidance::unite_coplanar_faces(bent, fit_region_planes(bent)),
             (std::vector<int>{0, 1, 2, 3, 4, 5, 6}));
-  const Mesh split = box_with_split_top(0.0);
+  const Mesh split = test::box_with_split_top(0.0);
   const brep_guidance::BrepFaces faces = brep_guidance::extract_brep_faces(split);
   ASSERT_TRUE(faces.from_input);
   for (auto f : split.faces()) {
