@@ -215,10 +215,6 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
   return labels;
 }
 
-}  // namespace
-
-namespace {
-
 // One punch at `radius`: the holed mesh and the hole's ground truth.
 struct Punch {
   PunchResult punched;
