@@ -622,20 +622,18 @@ TEST(BrepGuidanceExactClosing, ALoopTouchingTheCommonLineIsSplitThere) {
   }
 }
 
-// The three holes whose decision is "close" that the plan and the first attempts after it
+// The holes whose decision is "close" that the plan and the first attempts after it
 // (loop vertices on the rebuilt edges, the loop's order) left open, guided instead (issue 17),
 // each closed now by one of the later attempts (docs/methods.md, "Exact closing"):
 // - cad/fandisk/edge_reflex/small at 0 %: k = 3, but face 3's part is one loop edge and the
 //   three planes' corner S lies beyond it, outside the hole; the plan's rebuilt edges ran out
 //   to S and crossed face 3's triangle there. Face 3's run goes to face 9 and the hole is
 //   closed as k = 2 on the common line of faces 1 and 9.
-// - cad/turbine/corner_rrr/small at 5 %: k = 2, one part is the whole loop, which lies in a
-//   plane nearly edge-on to its face's fitted plane (a thin segmented region); its
-//   projection onto that plane folds, onto its own least-squares plane it does not.
-// - cad/turbine/corner_crrrr/small at 25 %: k = 3 on two regions of one noisy planar face (their
-//   planes 6 degrees apart) and a face whose part is a single vertex; their common line is
-//   ill-defined and the rebuilt edge left the hole. The loop lies in one plane within the
-//   faces' noise and is closed as one part in that plane.
+// Two more cases, cad/turbine/corner_rrr/small at 5 % ("triangulated in its own least-squares
+// plane") and cad/turbine/corner_crrrr/small at 25 % ("the loop closed as one part in its own
+// least-squares plane"), were holes that cut a turbine blade through; since 2026-12-03 such
+// holes are punched smaller, and no CAD case reaches those two attempts any more (all 438
+// brep_guidance jobs of cad/* at 0, 5 and 25 % measured): they need new cases.
 // Each hole is closed without fallback, named in the note, the input's faces unchanged, no
 // boundary left and no new face intersecting another or the mesh around it.
 struct LaterAttemptCase {
@@ -676,23 +674,19 @@ TEST_P(BrepGuidanceLaterClosingAttempts, CloseTheHoleWithoutIntersections) {
   EXPECT_EQ(patch_intersections(result.repaired, patch), 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Issue17, BrepGuidanceLaterClosingAttempts,
-    ::testing::Values(LaterAttemptCase{"cad/fandisk/edge_reflex/small", 0.0,
-                                       "face 3's run of 1 edge given to face 9, closed as k = 2"},
-                      LaterAttemptCase{"cad/turbine/corner_rrr/small", 5.0,
-                                       "triangulated in its own least-squares plane"},
-                      LaterAttemptCase{
-                          "cad/turbine/corner_crrrr/small", 25.0,
-                          "the loop closed as one part in its own least-squares plane"}),
-    [](const ::testing::TestParamInfo<LaterAttemptCase>& info) {
-      std::string name = info.param.id;
-      for (char& ch : name) {
-        if (ch == '/')
-          ch = '_';
-      }
-      return name + "_noise_" + std::to_string(static_cast<int>(info.param.noise));
-    });
+INSTANTIATE_TEST_SUITE_P(Issue17, BrepGuidanceLaterClosingAttempts,
+                         ::testing::Values(LaterAttemptCase{
+                             "cad/fandisk/edge_reflex/small", 0.0,
+                             "face 3's run of 1 edge given to face 9, closed as k = 2"}),
+                         [](const ::testing::TestParamInfo<LaterAttemptCase>& info) {
+                           std::string name = info.param.id;
+                           for (char& ch : name) {
+                             if (ch == '/')
+                               ch = '_';
+                           }
+                           return name + "_noise_" +
+                                  std::to_string(static_cast<int>(info.param.noise));
+                         });
 
 }  // namespace
 }  // namespace holebench

@@ -177,12 +177,12 @@ TEST(CrestFeatureCornerGraph, EdgeThatEndsAtAMissingCornerIsNotCutAtABend) {
   run_expecting_present(c, harness::OracleOptions{}, 1.0);
 }
 
-// Where the corner graph's sub-holes cannot be stitched (a turbine corner hole, measured:
-// "a patch triangle could not be stitched (non-manifold)"), the hole is filled again with
-// the paper's features alone, before any stand-in: the hole is closed by the method and
-// its record names no fallback.
+// Where the corner graph's sub-holes cannot be stitched (a turbine corner hole, measured
+// 2026-12-03: "a patch triangle could not be stitched (non-manifold)"), the hole is filled again
+// with the paper's features alone, before any stand-in: the hole is closed by the method and its
+// record names no fallback.
 TEST(CrestFeatureCornerGraph, GraphThatCannotBeStitchedIsLeftOutBeforeAnyStandIn) {
-  const Case c = generators::make_case("cad/turbine/corner_ccrr/small");
+  const Case c = generators::make_case("cad/turbine/corner_rrrr/small");
   harness::OracleUser oracle(c);
   const MethodResult result = CrestFeatureMethod().run(c.input, {}, oracle);
   bool left_out = false;
