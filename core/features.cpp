@@ -1,7 +1,7 @@
 #include "core/features.h"
 
 #include "core/geometry.h"
-#include "core/plane_fit.h"
+#include "core/planar_regions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,11 +85,10 @@ SegmentationResult regions_of_mesh(const Mesh& mesh, const FeatureOptions& optio
   for (auto f : mesh.faces())
     result.face_region[f.idx()] = region(mesh, f);
   result.region_count = region_count(mesh);
-  const auto planes = fit_region_planes(mesh);
-  const double flat = 1e-6 * bounding_box_diagonal(mesh);
+  const std::vector<char> is_planar =
+      planar_regions(fit_region_planes(mesh), 1e-6 * bounding_box_diagonal(mesh));
   const auto planar = [&](int r) {
-    return r >= 0 && r < static_cast<int>(planes.size()) && planes[r].valid &&
-           planes[r].plane.rms_residual < flat;
+    return r >= 0 && r < static_cast<int>(is_planar.size()) && is_planar[r];
   };
   for (auto e : mesh.edges()) {
     if (e.is_boundary())

@@ -2,6 +2,7 @@
 
 #include "core/coplanar_regions.h"
 #include "core/geometry.h"
+#include "core/planar_regions.h"
 #include "core/plane_fit.h"
 
 #include <algorithm>
@@ -20,11 +21,7 @@ AnalysedModel analyse_model(std::string name, Mesh mesh, const FeatureOptions& o
   assign_regions(mesh, model.features.segmentation);
   model.diagonal = bounding_box_diagonal(mesh);
   const auto planes = fit_region_planes(mesh);
-  model.region_is_planar.resize(planes.size());
-  for (std::size_t r = 0; r < planes.size(); ++r) {
-    model.region_is_planar[r] =
-        planes[r].valid && planes[r].plane.rms_residual < 1e-6 * model.diagonal;
-  }
+  model.region_is_planar = planar_regions(planes, 1e-6 * model.diagonal);
   CoplanarRegionsOptions coplanar;
   coplanar.distance = 1e-6 * model.diagonal;
   model.coplanar_group = coplanar_region_groups(mesh, planes, model.region_is_planar, coplanar);

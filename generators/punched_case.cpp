@@ -222,13 +222,12 @@ struct Punch {
   bool cuts_through = false;  ///< several boundary loops, or a whole face of the model removed
 };
 
-Punch punch_at(const AnalysedModel& model, const PunchTarget& target,
+Punch punch_at(const AnalysedModel& model, const PunchTarget& target, const Frame& frame,
                const PunchedCaseOptions& options, const IrregularRadius& outer) {
   const Mesh& mesh = model.mesh;
   const double inner_ratio = target.kind == "island" ? options.island_ratio : 0.0;
   Punch punch;
-  punch.punched = punch_faces(
-      mesh, select_faces(mesh, target.vertex, frame_at(mesh, target.vertex), outer, inner_ratio));
+  punch.punched = punch_faces(mesh, select_faces(mesh, target.vertex, frame, outer, inner_ratio));
   HoleTruth& truth = punch.truth;
   truth.target = target.kind;
   truth.removed_faces = punch.punched.removed_faces;
@@ -257,7 +256,8 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
   IrregularRadius outer{std::max(options.radius_rel_diag * model.diagonal, target.min_radius),
                         options.irregularity, random.uniform(0.0, 2.0 * M_PI),
                         random.uniform(0.0, 2.0 * M_PI)};
-  Punch punch = punch_at(model, target, options, outer);
+  const Frame frame = frame_at(model.mesh, target.vertex);
+  Punch punch = punch_at(model, target, frame, options, outer);
   // A hole that cuts through a thin part (several loops) or takes a whole face away is
   // outside the taxonomy: punched again, smaller, while it stays at least min_radius. The
   // same shape (phases), only the radius changes, so the case is still one id's alone.
@@ -266,7 +266,7 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
     if (radius < target.min_radius)
       break;
     outer.radius = radius;
-    Punch smaller = punch_at(model, target, options, outer);
+    Punch smaller = punch_at(model, target, frame, options, outer);
     if (smaller.punched.removed_faces.empty())
       break;
     punch = std::move(smaller);

@@ -7,6 +7,7 @@
 #include "core/coplanar_regions.h"
 #include "core/geometry.h"
 #include "core/mesh.h"
+#include "core/planar_regions.h"
 #include "core/plane_fit.h"
 
 #include <gtest/gtest.h>
@@ -172,12 +173,9 @@ inline void expect_punched_labels_agree(const Case& punched_case, const Boundary
   {
     const auto planes = fit_region_planes(c.complete);
     const double flat = 1e-6 * bounding_box_diagonal(c.complete);
-    std::vector<char> planar(planes.size());
-    for (std::size_t r = 0; r < planes.size(); ++r)
-      planar[r] = planes[r].valid && planes[r].plane.rms_residual < flat;
     CoplanarRegionsOptions options;
     options.distance = flat;
-    group = coplanar_region_groups(c.complete, planes, planar, options);
+    group = coplanar_region_groups(c.complete, planes, planar_regions(planes, flat), options);
     for (auto f : c.complete.faces()) {
       if (region(c.complete, f) != kNoRegion)
         set_region(c.complete, f, group[region(c.complete, f)]);
