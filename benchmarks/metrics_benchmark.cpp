@@ -11,6 +11,7 @@
 #include "harness/outputs/render/snapshot.h"
 #include "harness/run/job.h"
 #include "methods/registry.h"
+#include "metrics/case_evaluation.h"
 #include "metrics/embree/arrow_visibility.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/evaluation.h"
@@ -350,20 +351,45 @@ void BM_Stage_Case(benchmark::State& state) {
 }
 BENCHMARK(BM_Stage_Case)->ArgsProduct({{0, 1, 2}, {0, 25}})->Unit(benchmark::kMillisecond);
 
-void BM_Stage_Evaluation(benchmark::State& state) {
+// A fixed case (state.range(0)) at a noise level (state.range(1)) and liepa_cgal's result.
+struct EvaluatedJob {
+  Case c;
+  MethodResult result;
+};
+EvaluatedJob evaluated_job(benchmark::State& state) {
   const double noise = static_cast<double>(state.range(1));
   state.SetLabel(fmt::format("{} noise {}", method_case(state.range(0)), noise));
-  const Case c = generators::make_case(method_case(state.range(0)), 0, noise);
+  EvaluatedJob job{generators::make_case(method_case(state.range(0)), 0, noise), {}};
   MethodParameters parameters;
-  parameters.structure_size = c.parameters.structure_size;
+  parameters.structure_size = job.c.parameters.structure_size;
   NoUser user;
-  const MethodResult result = make_method("liepa_cgal")->run(c.input, parameters, user);
+  job.result = make_method("liepa_cgal")->run(job.c.input, parameters, user);
+  return job;
+}
+
+void BM_Stage_Evaluation(benchmark::State& state) {
+  const auto [c, result] = evaluated_job(state);
   for (auto _ : state) {
     const Evaluation evaluation = evaluate(c, result);
     benchmark::DoNotOptimize(evaluation.values.size());
   }
 }
 BENCHMARK(BM_Stage_Evaluation)->ArgsProduct({{0, 1, 2}, {0, 25}})->Unit(benchmark::kMillisecond);
+
+// The same evaluation in a group of jobs: what the case's jobs share (CaseEvaluation) built
+// once outside the timer, as the grouped runner builds it once per case instance.
+void BM_Stage_EvaluationShared(benchmark::State& state) {
+  const auto [c, result] = evaluated_job(state);
+  const EvaluationOptions options;
+  const CaseEvaluation shared(c, options);
+  for (auto _ : state) {
+    const Evaluation evaluation = evaluate(c, result, options, shared);
+    benchmark::DoNotOptimize(evaluation.values.size());
+  }
+}
+BENCHMARK(BM_Stage_EvaluationShared)
+    ->ArgsProduct({{0, 1, 2}, {0, 25}})
+    ->Unit(benchmark::kMillisecond);
 
 // The five nightly methods on one case instance (fandisk edge hole, 25 % noise), in this
 // process and without snapshots: each job making its own case (run_job, as one process per
@@ -394,9 +420,11 @@ BENCHMARK(BM_Runner_OneCasePerJob)->Unit(benchmark::kMillisecond);
 void BM_Runner_OneCasePerGroup(benchmark::State& state) {
   const auto jobs = nightly_jobs_of_one_case();
   for (auto _ : state) {
-    const harness::PreparedCase prepared = harness::prepare_case(jobs.front(), {});
+    harness::PreparedCase prepared = harness::prepare_case(jobs.front(), {});
+    harness::share_evaluation(prepared, {});
     for (const auto& job : jobs)
-      benchmark::DoNotOptimize(harness::run_job_on_case(job, prepared, 0.0, {}).status);
+      benchmark::DoNotOptimize(
+          harness::run_job_on_case(job, prepared, &job == &jobs.front(), {}).status);
   }
 }
 BENCHMARK(BM_Runner_OneCasePerGroup)->Unit(benchmark::kMillisecond);

@@ -1,5 +1,7 @@
 #include "metrics/evaluation.h"
 
+#include "metrics/case_evaluation.h"
+
 #include "core/geometry.h"
 #include "metrics/classification_accuracy.h"
 #include "metrics/embree/arrow_visibility.h"
@@ -162,11 +164,11 @@ void add_feature_recovery(const Case& c, const MethodResult& result,
 }
 
 void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
-                  double diagonal, Recorder& out) {
+                  double diagonal, const InputSelfIntersections* known_input, Recorder& out) {
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
-  const Validity v = validity(c.input, result.repaired, validity_options);
+  const Validity v = validity(c.input, result.repaired, validity_options, known_input);
   out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
   out.add_flag(kIsClosed, v.open_boundary_loops == 0);
   out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);
@@ -256,25 +258,44 @@ void add_fallbacks(const MethodResult& result, Recorder& out) {
           fraction(static_cast<std::size_t>(fallbacks), result.holes.size()));
 }
 
-}  // namespace
-
-Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options) {
+// The metrics, with the complete model's scene and the input's own self-intersections
+// given (shared by the case's jobs) or made here.
+Evaluation evaluate_with(const Case& c, const MethodResult& result,
+                         const EvaluationOptions& options,
+                         const embree::TriangleScene* shared_complete_scene,
+                         const InputSelfIntersections* known_input) {
   Evaluation evaluation;
   Recorder out(evaluation.values);
   const double diagonal = bounding_box_diagonal(c.complete);
   if (!(diagonal > 0.0) || c.complete.n_faces() == 0)
     return evaluation;  // no ground truth to measure against
-  const embree::TriangleScene complete_scene(c.complete);
+  std::unique_ptr<embree::TriangleScene> own_complete_scene;
+  if (!shared_complete_scene)
+    own_complete_scene = std::make_unique<embree::TriangleScene>(c.complete);
+  const embree::TriangleScene& complete_scene =
+      shared_complete_scene ? *shared_complete_scene : *own_complete_scene;
   if (result.repaired.n_faces() > 0) {
     const embree::TriangleScene repaired_scene(result.repaired);
     add_distances(c, result, options, diagonal, complete_scene, repaired_scene, out);
     add_feature_recovery(c, result, options, diagonal, complete_scene, out);
   }
-  add_validity(c, result, options, diagonal, out);
+  add_validity(c, result, options, diagonal, known_input, out);
   add_classification(c, result, out);
   add_arrows(c, result, options, diagonal, complete_scene, out);
   add_fallbacks(result, out);
   return evaluation;
+}
+
+}  // namespace
+
+Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options) {
+  return evaluate_with(c, result, options, nullptr, nullptr);
+}
+
+Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options,
+                    const CaseEvaluation& shared) {
+  return evaluate_with(c, result, options, shared.complete_scene(),
+                       shared.input_self_intersections());
 }
 
 }  // namespace holebench

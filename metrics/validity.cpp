@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
 #include <set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -49,9 +52,128 @@ double smallest_angle_degrees(const std::array<Point, 3>& t) {
   return smallest;
 }
 
+// A face's vertex indices in a canonical cyclic rotation (smallest first), as one key.
+struct IndexTriple {
+  std::array<int, 3> v;
+  bool operator==(const IndexTriple& other) const { return v == other.v; }
+};
+struct IndexTripleHash {
+  std::size_t operator()(const IndexTriple& t) const {
+    std::size_t h = 0;
+    for (int i : t.v)
+      h = h * 1000003u ^ std::hash<int>()(i);
+    return h;
+  }
+};
+IndexTriple index_triple(const Mesh& mesh, FaceHandle f) {
+  IndexTriple t;
+  int k = 0;
+  for (auto v : mesh.fv_range(f))
+    t.v[k++] = v.idx();
+  std::rotate(t.v.begin(), std::min_element(t.v.begin(), t.v.end()), t.v.end());
+  return t;
+}
+
+struct Box {
+  Point lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+           std::numeric_limits<double>::infinity()};
+  Point hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+           -std::numeric_limits<double>::infinity()};
+  void add(const Point& p) {
+    lo.minimize(p);
+    hi.maximize(p);
+  }
+  bool meets(const Box& other) const {
+    for (int i = 0; i < 3; ++i) {
+      if (hi[i] < other.lo[i] || other.hi[i] < lo[i])
+        return false;
+    }
+    return true;
+  }
+};
+Box face_box(const Mesh& mesh, FaceHandle f) {
+  Box box;
+  for (auto v : mesh.fv_range(f))
+    box.add(mesh.point(v));
+  return box;
+}
+
 }  // namespace
 
-Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options) {
+InputSelfIntersections input_self_intersections(const Mesh& input) {
+  return {cgal::self_intersecting_pairs(input)};
+}
+
+cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const Mesh& repaired,
+                                                      const InputSelfIntersections& known_input) {
+  // Vertices of the repaired mesh at the input's index and, bit for bit, its point.
+  const std::size_t common =
+      std::min(input.n_vertices(), static_cast<std::size_t>(repaired.n_vertices()));
+  std::vector<char> same_vertex(common, 0);
+  for (std::size_t i = 0; i < common; ++i) {
+    const VertexHandle v(static_cast<int>(i));
+    same_vertex[i] = !repaired.status(v).deleted() && repaired.point(v) == input.point(v);
+  }
+  const auto on_same_vertices = [&](const IndexTriple& t) {
+    for (int i : t.v) {
+      if (i < 0 || static_cast<std::size_t>(i) >= common || !same_vertex[i])
+        return false;
+    }
+    return true;
+  };
+  std::unordered_map<IndexTriple, int, IndexTripleHash> input_face_of;
+  input_face_of.reserve(input.n_faces());
+  for (auto f : input.faces()) {
+    const IndexTriple t = index_triple(input, f);
+    if (on_same_vertices(t))
+      input_face_of.emplace(t, f.idx());
+  }
+  // Kept faces (repaired face -> input face, one each) and the others with their box.
+  std::vector<int> repaired_face_of_input(input.n_faces(), -1);
+  std::vector<char> kept(repaired.n_faces(), 0);
+  std::vector<int> others;
+  Box others_box;
+  for (auto f : repaired.faces()) {
+    const auto it = input_face_of.find(index_triple(repaired, f));
+    if (it != input_face_of.end() && repaired_face_of_input[it->second] < 0) {
+      repaired_face_of_input[it->second] = f.idx();
+      kept[f.idx()] = 1;
+      continue;
+    }
+    others.push_back(f.idx());
+    for (auto v : repaired.fv_range(f))
+      others_box.add(repaired.point(v));
+  }
+  // The pairs with a face that is not kept: among those faces and the kept ones nearby.
+  std::vector<FacePair> pairs;
+  if (!others.empty()) {
+    std::vector<int> tested = others;
+    for (auto f : repaired.faces()) {
+      if (kept[f.idx()] && face_box(repaired, f).meets(others_box))
+        tested.push_back(f.idx());
+    }
+    for (const FacePair& p : cgal::self_intersecting_pairs(repaired, tested)) {
+      if (!(kept[p.first] && kept[p.second]))
+        pairs.push_back(p);
+    }
+  }
+  // The pairs of two kept faces: the input's.
+  for (const auto& [a, b] : known_input.pairs) {
+    const int f = repaired_face_of_input[a], g = repaired_face_of_input[b];
+    if (f >= 0 && g >= 0)
+      pairs.push_back(std::minmax(f, g));
+  }
+  cgal::SelfIntersections result;
+  result.pairs = pairs.size();
+  for (const auto& [f, g] : pairs) {
+    if (is_new(repaired, FaceHandle(f)) || is_new(repaired, FaceHandle(g)))
+      ++result.patch_pairs;
+  }
+  return result;
+}
+
+Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
+                  const InputSelfIntersections* known_input) {
   Validity result;
   result.open_boundary_loops = find_boundary_loops(repaired).size();
 
@@ -73,7 +195,16 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   }
 
   if (options.self_intersections) {
-    const auto pairs = cgal::self_intersections(repaired);
+    cgal::SelfIntersections pairs;
+    if (known_input) {
+      pairs = self_intersections_from_input(input, repaired, *known_input);
+    } else {
+      for (const auto& [f, g] : cgal::self_intersecting_pairs(repaired)) {
+        ++pairs.pairs;
+        if (is_new(repaired, FaceHandle(f)) || is_new(repaired, FaceHandle(g)))
+          ++pairs.patch_pairs;
+      }
+    }
     result.self_intersections_tested = true;
     result.self_intersections = pairs.pairs;
     result.patch_self_intersections = pairs.patch_pairs;

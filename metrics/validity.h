@@ -21,6 +21,8 @@
 #include "core/mesh.h"
 
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 namespace holebench {
 
@@ -29,6 +31,13 @@ struct ValidityOptions {
   double min_angle_degrees = 1e-3;  ///< a new face with a smaller angle is degenerate
   bool self_intersections = true;   ///< run CGAL's self-intersection test
 };
+
+namespace cgal {
+struct SelfIntersections {
+  std::size_t pairs = 0;        ///< intersecting face pairs
+  std::size_t patch_pairs = 0;  ///< pairs with at least one `Provenance::New` face
+};
+}  // namespace cgal
 
 struct Validity {
   std::size_t open_boundary_loops = 0;
@@ -41,18 +50,44 @@ struct Validity {
   std::size_t original_faces_changed = 0;
 };
 
-/// Validity of `repaired`, the repair of `input`.
-Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {});
+/// A pair of face indices that intersect, the smaller first.
+using FacePair = std::pair<int, int>;
+
+/// The input's own intersecting face pairs (input face indices), which every repair of it
+/// that keeps the input's faces shares: computed once per case (metrics/case_evaluation.h)
+/// so that each repair's self-intersection test only covers its new faces and their
+/// neighbourhood.
+struct InputSelfIntersections {
+  std::vector<FacePair> pairs;  ///< sorted
+};
+
+/// CGAL's self-intersection test on the input alone.
+InputSelfIntersections input_self_intersections(const Mesh& input);
+
+/// Validity of `repaired`, the repair of `input`. With `known_input` (the input's own pairs,
+/// from input_self_intersections), the self-intersections are counted from them and from a
+/// test of the faces that are not the input's and of the input's faces in their bounding box
+/// (self_intersections_from_input): the same counts as the test of the whole repaired mesh.
+Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {},
+                  const InputSelfIntersections* known_input = nullptr);
+
+/// The self-intersections of `repaired` from the input's own pairs. The faces of `repaired`
+/// with exactly the input's vertex indices, on vertices at exactly the input's points, are
+/// the input's faces (kept): two kept faces intersect in `repaired` exactly when they do in
+/// the input (the same points and the same shared vertices). Every other pair has a face
+/// that is not kept, whose box lies in the bounding box of those faces: CGAL tests those
+/// faces and the kept faces whose box meets that bounding box, and the pairs of two kept
+/// faces it finds there are the input's.
+cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const Mesh& repaired,
+                                                      const InputSelfIntersections& known_input);
 
 namespace cgal {
-struct SelfIntersections {
-  std::size_t pairs = 0;        ///< intersecting face pairs
-  std::size_t patch_pairs = 0;  ///< pairs with at least one `Provenance::New` face
-};
 /// CGAL::Polygon_mesh_processing::self_intersections on the mesh itself (CGAL's OpenMesh
-/// graph traits). metrics/cgal/self_intersections.cpp: the metrics' one CGAL translation
-/// unit.
-SelfIntersections self_intersections(const Mesh& mesh);
+/// graph traits), each pair once, sorted. metrics/cgal/self_intersections.cpp: the metrics'
+/// one CGAL translation unit.
+std::vector<FacePair> self_intersecting_pairs(const Mesh& mesh);
+/// The same among the faces `among` only (face indices of `mesh`; adjacency is the mesh's).
+std::vector<FacePair> self_intersecting_pairs(const Mesh& mesh, const std::vector<int>& among);
 }  // namespace cgal
 
 }  // namespace holebench

@@ -47,12 +47,24 @@ PreparedCase prepare_case(const Job& job, const JobOptions& options) {
   return prepared;
 }
 
-JobRecord run_job(const Job& job, const JobOptions& options) {
-  const PreparedCase prepared = prepare_case(job, options);
-  return run_job_on_case(job, prepared, prepared.seconds, options);
+void share_evaluation(PreparedCase& prepared, const JobOptions& options) {
+  if (prepared.failure)
+    return;
+  try {
+    const auto start = Clock::now();
+    prepared.evaluation = std::make_shared<const CaseEvaluation>(prepared.c, options.evaluation);
+    prepared.evaluation_seconds = seconds_since(start);
+  } catch (const std::exception&) {
+    prepared.evaluation.reset();  // each job evaluates on its own, and reports its failure
+  }
 }
 
-JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, double case_seconds,
+JobRecord run_job(const Job& job, const JobOptions& options) {
+  const PreparedCase prepared = prepare_case(job, options);
+  return run_job_on_case(job, prepared, true, options);
+}
+
+JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool first_of_group,
                           const JobOptions& options) {
   JobRecord record;
   record.job = job;
@@ -64,7 +76,7 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, double c
   const Case& c = prepared.c;
   record.case_family = c.family;
   record.case_kind = c.kind;
-  record.stages.push_back({"case", case_seconds});
+  record.stages.push_back({"case", first_of_group ? prepared.seconds : 0.0});
 
   try {
     const std::unique_ptr<Method> method =
@@ -103,8 +115,12 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, double c
     }
     record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
     const auto evaluation_start = Clock::now();
-    record.metrics = evaluate(c, result, options.evaluation).values;
-    record.stages.push_back({"evaluation", seconds_since(evaluation_start)});
+    record.metrics = prepared.evaluation
+                         ? evaluate(c, result, options.evaluation, *prepared.evaluation).values
+                         : evaluate(c, result, options.evaluation).values;
+    record.stages.push_back(
+        {"evaluation",
+         seconds_since(evaluation_start) + (first_of_group ? prepared.evaluation_seconds : 0.0)});
     record.metrics.push_back({metric_names::kTimeMethodS, record.method_seconds});
     if (!options.snapshot_dir.empty()) {
       const auto path = options.snapshot_dir / (file_stem_of_id(job.id()) + ".png");

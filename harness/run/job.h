@@ -5,11 +5,13 @@
 #include "generators/case_catalog.h"
 #include "methods/external/external_method_spec.h"
 #include "methods/method.h"
+#include "metrics/case_evaluation.h"
 #include "metrics/evaluation.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -103,6 +105,10 @@ struct JobOptions {
 struct PreparedCase {
   Case c;
   double seconds = 0.0;  ///< wall time of making it
+  /// What the evaluations of its jobs share (metrics/case_evaluation.h), built once for a
+  /// group of jobs (share_evaluation); nullptr: each job's evaluation builds its own.
+  std::shared_ptr<const CaseEvaluation> evaluation;
+  double evaluation_seconds = 0.0;  ///< wall time of building `evaluation`
   /// Set when the case could not be made: the status (invalid_input, out_of_memory) and
   /// message every job of it gets.
   std::optional<std::pair<JobStatus, std::string>> failure;
@@ -111,11 +117,17 @@ struct PreparedCase {
 /// Makes the case of `job` (its id, noise level and seed). Never throws.
 PreparedCase prepare_case(const Job& job, const JobOptions& options);
 
-/// Runs the method of `job` on a prepared case, evaluates, renders. `case_seconds` is the
-/// case time the record's "case" stage carries (the first job of a group carries the making
-/// of the case, the others 0, so that the stages of a run add up to its work). Never
-/// throws: every failure becomes the record's status and message.
-JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, double case_seconds,
+/// Builds what the evaluations of a prepared case's jobs share (PreparedCase::evaluation),
+/// for a group of jobs on one case. Where it cannot be built (out of memory, an exception),
+/// the jobs build their own, as they would without it. Never throws.
+void share_evaluation(PreparedCase& prepared, const JobOptions& options);
+
+/// Runs the method of `job` on a prepared case, evaluates, renders. The first job of a
+/// group (`first_of_group`) carries the making of the case in its "case" stage and the
+/// building of the shared evaluation in its "evaluation" stage, the others 0 for them, so
+/// that the stages of a run add up to its work. Never throws: every failure becomes the
+/// record's status and message.
+JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool first_of_group,
                           const JobOptions& options);
 
 /// Generates the case, runs the method with no user, evaluates, renders. Never throws:

@@ -169,12 +169,13 @@ RunSummary run_jobs(const RunOptions& options) {
                                    threads_per_job](const std::vector<Job>& group) -> JobFunction {
       auto threads = std::make_shared<const tbb::global_control>(
           tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads_per_job));
-      auto prepared =
-          std::make_shared<const PreparedCase>(prepare_case(group.front(), job_options));
+      auto made = std::make_shared<PreparedCase>(prepare_case(group.front(), job_options));
+      if (group.size() > 1)
+        share_evaluation(*made, job_options);
+      std::shared_ptr<const PreparedCase> prepared = std::move(made);
       const std::string first = group.front().id();
       return [threads, prepared, first, &job_options](const Job& job) {
-        return run_job_on_case(job, *prepared, job.id() == first ? prepared->seconds : 0.0,
-                               job_options);
+        return run_job_on_case(job, *prepared, job.id() == first, job_options);
       };
     };
     ProcessPoolResult result =

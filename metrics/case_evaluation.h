@@ -1,0 +1,46 @@
+// What the evaluations of one case share, whatever the method: built once per case instance
+// (the runner builds it beside the case, in the process its jobs are forked from) and read
+// by evaluate() for every method's result. It changes no number: evaluate() with it gives
+// the same metrics as without it, in less time.
+#pragma once
+
+#include "core/case.h"
+#include "metrics/evaluation.h"
+#include "metrics/validity.h"
+
+#include <memory>
+#include <optional>
+
+namespace holebench {
+
+namespace embree {
+class TriangleScene;
+}
+
+class CaseEvaluation {
+ public:
+  /// Builds the complete model's Embree scene and, where `options` test self-intersections,
+  /// the input's own intersecting pairs (validity.h).
+  CaseEvaluation(const Case& c, const EvaluationOptions& options);
+  ~CaseEvaluation();
+  CaseEvaluation(const CaseEvaluation&) = delete;
+  CaseEvaluation& operator=(const CaseEvaluation&) = delete;
+
+  /// The complete model's scene, or nullptr where the case has no complete model.
+  const embree::TriangleScene* complete_scene() const { return complete_scene_.get(); }
+  /// The input's own intersecting pairs, or nullptr where they were not computed.
+  const InputSelfIntersections* input_self_intersections() const {
+    return input_self_intersections_ ? &*input_self_intersections_ : nullptr;
+  }
+
+ private:
+  std::unique_ptr<embree::TriangleScene> complete_scene_;
+  std::optional<InputSelfIntersections> input_self_intersections_;
+};
+
+/// evaluate() with what the case's evaluations share; `shared` must have been built from the
+/// same case and options. The same metrics as evaluate(c, result, options).
+Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options,
+                    const CaseEvaluation& shared);
+
+}  // namespace holebench
