@@ -1,12 +1,23 @@
 #include "metrics/case_evaluation.h"
 
+#include "core/geometry.h"
 #include "metrics/embree/triangle_scene.h"
 
 namespace holebench {
 
 CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) {
-  if (c.complete.n_faces() > 0)
+  const double diagonal = bounding_box_diagonal(c.complete);
+  if (c.complete.n_faces() > 0 && diagonal > 0.0) {
     complete_scene_ = std::make_unique<embree::TriangleScene>(c.complete);
+    const MeanDistanceOptions mean = whole_model_distance_options(options, diagonal).mean;
+    input_cell_bounds_ =
+        std::make_unique<MeanCellBounds>(c.input, c.complete, *complete_scene_, mean);
+    if (c.input.n_faces() > 0) {
+      const embree::TriangleScene input_scene(c.input);
+      complete_cell_bounds_ =
+          std::make_unique<MeanCellBounds>(c.complete, c.input, input_scene, mean);
+    }
+  }
   if (options.self_intersections)
     input_self_intersections_ = holebench::input_self_intersections(c.input);
 }

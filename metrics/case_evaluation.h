@@ -6,6 +6,7 @@
 
 #include "core/case.h"
 #include "metrics/evaluation.h"
+#include "metrics/surface_distance.h"
 #include "metrics/validity.h"
 
 #include <memory>
@@ -19,8 +20,12 @@ class TriangleScene;
 
 class CaseEvaluation {
  public:
-  /// Builds the complete model's Embree scene and, where `options` test self-intersections,
-  /// the input's own intersecting pairs (validity.h).
+  /// Builds the complete model's Embree scene; the first bounds of the whole model's mean
+  /// searches (surface_distance.h, MeanCellBounds): of the input's faces against the
+  /// complete model (the faces a repair keeps need none of their own) and of the complete
+  /// model's faces against the input (a repair is the input away from its new faces); and,
+  /// where `options` test self-intersections, the input's own intersecting pairs
+  /// (validity.h).
   CaseEvaluation(const Case& c, const EvaluationOptions& options);
   ~CaseEvaluation();
   CaseEvaluation(const CaseEvaluation&) = delete;
@@ -28,6 +33,10 @@ class CaseEvaluation {
 
   /// The complete model's scene, or nullptr where the case has no complete model.
   const embree::TriangleScene* complete_scene() const { return complete_scene_.get(); }
+  /// The input's faces' first bounds against the complete model, or nullptr.
+  const MeanCellBounds* input_cell_bounds() const { return input_cell_bounds_.get(); }
+  /// The complete model's faces' first bounds against the input, or nullptr.
+  const MeanCellBounds* complete_cell_bounds() const { return complete_cell_bounds_.get(); }
   /// The input's own intersecting pairs, or nullptr where they were not computed.
   const InputSelfIntersections* input_self_intersections() const {
     return input_self_intersections_ ? &*input_self_intersections_ : nullptr;
@@ -35,6 +44,8 @@ class CaseEvaluation {
 
  private:
   std::unique_ptr<embree::TriangleScene> complete_scene_;
+  std::unique_ptr<MeanCellBounds> input_cell_bounds_;
+  std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
   std::optional<InputSelfIntersections> input_self_intersections_;
 };
 

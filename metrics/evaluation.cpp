@@ -9,14 +9,27 @@
 #include "metrics/face_subset.h"
 #include "metrics/feature_recovery.h"
 #include "metrics/hole_matching.h"
+#include "metrics/kept_faces.h"
 #include "metrics/metric_names.h"
 #include "metrics/surface_distance.h"
 #include "metrics/validity.h"
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 namespace holebench {
+
+SurfaceDistanceOptions whole_model_distance_options(const EvaluationOptions& options,
+                                                    double diagonal) {
+  SurfaceDistanceOptions whole;
+  whole.hausdorff.error_bound = options.hausdorff_error_bound_rel_diag * diagonal;
+  whole.mean.error_bound = options.mean_error_bound_rel_diag * diagonal;
+  whole.mean.relative_error_bound = options.mean_relative_error_bound;
+  whole.mean.query_budget = options.mean_query_budget;
+  whole.mean.coarse_error_bound = options.mean_coarse_error_bound_rel_diag * diagonal;
+  return whole;
+}
 
 const MetricValue* Evaluation::find(const std::string& name) const {
   for (const auto& value : values) {
@@ -55,18 +68,36 @@ void add_interval(Recorder& out, const IntervalNames& names, const DistanceInter
   out.add(names.upper, d.upper / diagonal);
 }
 
+// The whole model's mean searches' first bounds from what the case's jobs share: the
+// repair's kept faces against the complete model are the input's; the complete model against
+// the repair is the complete model against the input away from the repair's changes.
+struct SharedFirstBounds {
+  FirstBounds repaired_to_complete;
+  FirstBounds complete_to_repaired;
+};
+SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
+                                      const CaseEvaluation* shared, const KeptFaces* kept) {
+  SharedFirstBounds first;
+  if (!shared)
+    return first;
+  first.repaired_to_complete.bounds = shared->input_cell_bounds();
+  if (kept && kept->order_kept) {
+    first.complete_to_repaired.bounds = shared->complete_cell_bounds();
+    first.complete_to_repaired.change.b0_face_of_b = &kept->input_face_of_repaired;
+    first.complete_to_repaired.change.changed = changed_faces_box(c.input, result.repaired, *kept);
+  }
+  return first;
+}
+
 void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                    double diagonal, const embree::TriangleScene& complete_scene,
-                   const embree::TriangleScene& repaired_scene, Recorder& out) {
+                   const embree::TriangleScene& repaired_scene, const SharedFirstBounds& first,
+                   Recorder& out) {
   const Mesh& repaired = result.repaired;
-  SurfaceDistanceOptions whole;
-  whole.hausdorff.error_bound = options.hausdorff_error_bound_rel_diag * diagonal;
-  whole.mean.error_bound = options.mean_error_bound_rel_diag * diagonal;
-  whole.mean.relative_error_bound = options.mean_relative_error_bound;
-  whole.mean.query_budget = options.mean_query_budget;
-  whole.mean.coarse_error_bound = options.mean_coarse_error_bound_rel_diag * diagonal;
+  const SurfaceDistanceOptions whole = whole_model_distance_options(options, diagonal);
   const SurfaceDistance d =
-      surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole);
+      surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
+                       &first.repaired_to_complete, &first.complete_to_repaired);
   const DistanceSummary model = d.summary();
   out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);
   out.add(kHausdorffUpperRelDiag, model.hausdorff.upper / diagonal);
@@ -164,11 +195,12 @@ void add_feature_recovery(const Case& c, const MethodResult& result,
 }
 
 void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
-                  double diagonal, const InputSelfIntersections* known_input, Recorder& out) {
+                  double diagonal, const InputSelfIntersections* known_input, const KeptFaces* kept,
+                  Recorder& out) {
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
-  const Validity v = validity(c.input, result.repaired, validity_options, known_input);
+  const Validity v = validity(c.input, result.repaired, validity_options, known_input, kept);
   out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
   out.add_flag(kIsClosed, v.open_boundary_loops == 0);
   out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);
@@ -258,12 +290,10 @@ void add_fallbacks(const MethodResult& result, Recorder& out) {
           fraction(static_cast<std::size_t>(fallbacks), result.holes.size()));
 }
 
-// The metrics, with the complete model's scene and the input's own self-intersections
-// given (shared by the case's jobs) or made here.
+// The metrics, with what the case's jobs share given (`shared`) or made here.
 Evaluation evaluate_with(const Case& c, const MethodResult& result,
-                         const EvaluationOptions& options,
-                         const embree::TriangleScene* shared_complete_scene,
-                         const InputSelfIntersections* known_input) {
+                         const EvaluationOptions& options, const CaseEvaluation* shared) {
+  const embree::TriangleScene* shared_complete_scene = shared ? shared->complete_scene() : nullptr;
   Evaluation evaluation;
   Recorder out(evaluation.values);
   const double diagonal = bounding_box_diagonal(c.complete);
@@ -274,12 +304,18 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     own_complete_scene = std::make_unique<embree::TriangleScene>(c.complete);
   const embree::TriangleScene& complete_scene =
       shared_complete_scene ? *shared_complete_scene : *own_complete_scene;
+  // The input's faces the repair kept, where the case's jobs share what is known of them.
+  std::optional<KeptFaces> kept;
+  if (shared)
+    kept = kept_faces(c.input, result.repaired);
   if (result.repaired.n_faces() > 0) {
     const embree::TriangleScene repaired_scene(result.repaired);
-    add_distances(c, result, options, diagonal, complete_scene, repaired_scene, out);
+    add_distances(c, result, options, diagonal, complete_scene, repaired_scene,
+                  shared_first_bounds(c, result, shared, kept ? &*kept : nullptr), out);
     add_feature_recovery(c, result, options, diagonal, complete_scene, out);
   }
-  add_validity(c, result, options, diagonal, known_input, out);
+  add_validity(c, result, options, diagonal, shared ? shared->input_self_intersections() : nullptr,
+               kept ? &*kept : nullptr, out);
   add_classification(c, result, out);
   add_arrows(c, result, options, diagonal, complete_scene, out);
   add_fallbacks(result, out);
@@ -289,13 +325,12 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
 }  // namespace
 
 Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options) {
-  return evaluate_with(c, result, options, nullptr, nullptr);
+  return evaluate_with(c, result, options, nullptr);
 }
 
 Evaluation evaluate(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                     const CaseEvaluation& shared) {
-  return evaluate_with(c, result, options, shared.complete_scene(),
-                       shared.input_self_intersections());
+  return evaluate_with(c, result, options, &shared);
 }
 
 }  // namespace holebench

@@ -5,6 +5,7 @@
 
 #include "core/case.h"
 #include "core/method_result.h"
+#include "metrics/surface_distance.h"
 
 #include <string>
 #include <vector>
@@ -60,6 +61,11 @@ struct Evaluation {
   std::vector<MetricValue> values;
   const MetricValue* find(const std::string& name) const;
 };
+
+/// The options of the whole model's distances (repaired against complete) for a case whose
+/// complete model has this bounding-box diagonal.
+SurfaceDistanceOptions whole_model_distance_options(const EvaluationOptions& options,
+                                                    double diagonal);
 
 /// Evaluates `result` (its repaired mesh and hole reports) against the ground truth of `c`.
 /// Embree scenes of the complete, repaired and (for arrows) holed model are built once and

@@ -13,8 +13,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
+#include <unordered_map>
 #include <vector>
 
 namespace holebench {
@@ -198,12 +201,120 @@ Estimate estimate(double area, double sum_mean, double sum_mean_width, double su
   return e;
 }
 
+// A cell's inputs to MeanSearch::bound(), bit for bit: its corners, their distances and
+// nearest faces of B.
+struct CellKey {
+  std::array<std::uint64_t, 12> bits{};
+  std::array<int, 3> faces{};
+  bool operator==(const CellKey& other) const { return bits == other.bits && faces == other.faces; }
+};
+struct CellKeyHash {
+  std::size_t operator()(const CellKey& key) const {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
+    const auto mix = [&h](std::uint64_t word) {
+      h ^= word;
+      h *= 1099511628211ull;
+    };
+    for (std::uint64_t word : key.bits)
+      mix(word);
+    for (int face : key.faces)
+      mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(face)));
+    return static_cast<std::size_t>(h);
+  }
+};
+CellKey key_of(const TriangleCell& cell) {
+  CellKey key;
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k)
+      std::memcpy(&key.bits[3 * i + k], &cell.corners[i][k], sizeof(double));
+    std::memcpy(&key.bits[9 + i], &cell.corner_distance[i], sizeof(double));
+  }
+  key.faces = cell.corner_face;
+  return key;
+}
+
+// What MeanSearch::bound() gives a cell.
+struct CellBounds {
+  double hi = 0.0, mean_lo = 0.0, mean_hi = 0.0, square_lo = 0.0, square_hi = 0.0;
+  GrowingBox reach;  // the balls of B0 the bounds read: valid where B is B0 in this box
+};
+
+}  // namespace
+
+struct MeanCellBounds::Table {
+  double error_bound = 0.0;
+  double relative_error_bound = 0.0;
+  std::unordered_map<CellKey, CellBounds, CellKeyHash> cells;
+  // Whether a search with `options` bounds a cell as these were bounded.
+  bool serves(const MeanDistanceOptions& options) const {
+    return options.error_bound == error_bound &&
+           options.relative_error_bound == relative_error_bound;
+  }
+};
+
+namespace {
+
 class MeanSearch {
  public:
   MeanSearch(const embree::TriangleScene& scene, const MeanDistanceOptions& options)
       : scene_(scene), options_(options) {}
 
-  DirectedMeanDistance run(const Mesh& a, const KnownDistances& known) {
+  // The first bounds of `cells` (bound()), in parallel (one query each, no shared state),
+  // taken from `first` where it holds the same cell and B is its B0 within the cell's reach.
+  void bound_each(std::vector<Cell>& cells, const FirstBounds* first) const {
+    std::vector<char> done(cells.size(), 0);
+    if (first && first->bounds && first->bounds->table().serves(options_)) {
+      const auto& table = first->bounds->table().cells;
+      const std::vector<int>* b0_face_of_b = first->change.b0_face_of_b;
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        TriangleCell as_b0 = cells[i];
+        bool mapped = true;
+        if (b0_face_of_b) {
+          for (int& face : as_b0.corner_face) {
+            if (face >= 0)
+              face = (*b0_face_of_b)[face];
+            mapped = mapped && face >= 0;
+          }
+        }
+        if (!mapped)
+          continue;
+        const auto it = table.find(key_of(as_b0));
+        if (it == table.end() || it->second.reach.meets(first->change.changed))
+          continue;
+        Cell& cell = cells[i];
+        cell.hi = it->second.hi;
+        cell.mean_lo = it->second.mean_lo;
+        cell.mean_hi = it->second.mean_hi;
+        cell.square_lo = it->second.square_lo;
+        cell.square_hi = it->second.square_hi;
+        done[i] = 1;
+      }
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256),
+                      [&](const auto& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          if (!done[i])
+                            bound(cells[i]);
+                        }
+                      });
+  }
+
+  // bound() of each cell, with the box of the balls of B its bounds read (the corners'
+  // included).
+  void bound_each_with_reach(std::vector<Cell>& cells, std::vector<GrowingBox>& reach) const {
+    reach.assign(cells.size(), GrowingBox());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256),
+                      [&](const auto& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          for (int k = 0; k < 3; ++k)
+                            reach[i].add_ball(cells[i].corners[k], cells[i].corner_distance[k]);
+                          bound(cells[i], &reach[i]);
+                        }
+                      });
+  }
+
+  DirectedMeanDistance run(const Mesh& a, const KnownDistances& known,
+                           const FirstBounds* first_bounds) {
     VertexDistances computed;
     const VertexDistances* vertices = known.vertices;
     if (!vertices) {
@@ -223,13 +334,9 @@ class MeanSearch {
         continue;  // lies on B: contributes zero, exactly
       initial.push_back(std::move(cell));
     }
-    // The first cells' bounds in parallel (one query each, no shared state); queued below
-    // in face order, so the result does not depend on the number of threads.
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
-                      [&](const auto& range) {
-                        for (std::size_t i = range.begin(); i != range.end(); ++i)
-                          bound(initial[i]);
-                      });
+    // The first cells' bounds; queued below in face order, so the result does not depend
+    // on the number of threads.
+    bound_each(initial, first_bounds);
     if (total_area_ <= 0.0)
       return result_;
     // The RMS error is about the mean-square error / (2 RMS): the scale that weighs the
@@ -340,7 +447,9 @@ class MeanSearch {
 
   // Bounds of d over the cell, pointwise (first order) and of its mean and mean square
   // (second order).
-  void bound(Cell& cell) const {
+  // `reach` (optional): grows to hold every ball of B that the bounds' queries read (the
+  // corners' distances come from the first pass, whose balls the caller adds).
+  void bound(Cell& cell, GrowingBox* reach = nullptr) const {
     const auto& c = cell.corners;
     const auto& d = cell.corner_distance;
     const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
@@ -356,6 +465,8 @@ class MeanSearch {
     const auto nearest = scene_.closest_point(
         centroid, std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
                             d[2] + (centroid - c[2]).norm()}));
+    if (reach)
+      reach->add_ball(centroid, nearest.distance);
 
     // First order, pointwise: 1-Lipschitz from the centroid and the corners.
     double lo = std::max(0.0, nearest.distance - centroid_radius);
@@ -393,6 +504,8 @@ class MeanSearch {
         sampled <= 4.0 * centroid_radius) {
       const auto near =
           scene_.faces_within(centroid, sampled + centroid_radius, kMaxExactMinimumFaces);
+      if (reach)
+        reach->add_ball(centroid, sampled + centroid_radius);
       if (near) {
         double minimum = sampled;
         for (int face : *near)
@@ -602,8 +715,44 @@ class MeanSearch {
 
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
                                             const MeanDistanceOptions& options,
-                                            const KnownDistances& known) {
-  return MeanSearch(b_scene, options).run(a, known);
+                                            const KnownDistances& known,
+                                            const FirstBounds* first_bounds) {
+  return MeanSearch(b_scene, options).run(a, known, first_bounds);
+}
+
+MeanCellBounds::MeanCellBounds(const Mesh& a0, const Mesh& b0,
+                               const embree::TriangleScene& b0_scene,
+                               const MeanDistanceOptions& options)
+    : table_(std::make_unique<Table>()) {
+  table_->error_bound = options.error_bound;
+  table_->relative_error_bound = options.relative_error_bound;
+  // The cells as surface_distance's search makes them: the same first pass over the
+  // vertices, the faces lying on B0 left out (the search skips them).
+  const SharedFaces shared = shared_faces(a0, b0);
+  const VertexDistances vertices = vertex_distances(a0, b0_scene, &shared.b_face_of_a);
+  std::vector<Cell> cells;
+  cells.reserve(a0.n_faces());
+  for (auto f : a0.faces()) {
+    if (shared.b_face_of_a[f.idx()] >= 0)
+      continue;
+    Cell cell(face_cell(a0, f, vertices));
+    if (triangle_area(cell.corners) > 0.0)
+      cells.push_back(std::move(cell));
+  }
+  std::vector<GrowingBox> reach;
+  MeanSearch(b0_scene, options).bound_each_with_reach(cells, reach);
+  table_->cells.reserve(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const Cell& cell = cells[i];
+    table_->cells.emplace(key_of(cell), CellBounds{cell.hi, cell.mean_lo, cell.mean_hi,
+                                                   cell.square_lo, cell.square_hi, reach[i]});
+  }
+}
+
+MeanCellBounds::~MeanCellBounds() = default;
+
+std::size_t MeanCellBounds::size() const {
+  return table_->cells.size();
 }
 
 namespace {
@@ -644,7 +793,9 @@ DistanceSummary max_of(const DistanceSummary& a, const DistanceSummary& b) {
 
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
-                                 const SurfaceDistanceOptions& options) {
+                                 const SurfaceDistanceOptions& options,
+                                 const FirstBounds* a_first_bounds,
+                                 const FirstBounds* b_first_bounds) {
   // One first pass per direction, shared by the Hausdorff and the mean searches; faces the
   // two meshes share exactly are skipped by both.
   const SharedFaces shared = shared_faces(a, b);
@@ -655,8 +806,8 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
   SurfaceDistance result;
   result.hausdorff.a_to_b = directed_hausdorff(a, b_scene, options.hausdorff, a_known);
   result.hausdorff.b_to_a = directed_hausdorff(b, a_scene, options.hausdorff, b_known);
-  result.a_to_b = directed_mean_distance(a, b_scene, options.mean, a_known);
-  result.b_to_a = directed_mean_distance(b, a_scene, options.mean, b_known);
+  result.a_to_b = directed_mean_distance(a, b_scene, options.mean, a_known, a_first_bounds);
+  result.b_to_a = directed_mean_distance(b, a_scene, options.mean, b_known, b_first_bounds);
   // The shared first pass counts once, with the Hausdorff search.
   result.hausdorff.a_to_b.queries += a_vertices.queries;
   result.hausdorff.b_to_a.queries += b_vertices.queries;

@@ -36,11 +36,14 @@
 
 #include "core/mesh.h"
 #include "core/statistics.h"
+#include "metrics/growing_box.h"
 #include "metrics/hausdorff_distance.h"
 
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <vector>
 
 namespace holebench {
 
@@ -80,11 +83,62 @@ struct DirectedMeanDistance {
   bool converged = true;
 };
 
+class MeanCellBounds;
+
+/// How the B of a search differs from the B0 that a MeanCellBounds was built against.
+struct SurfaceChange {
+  /// By face of B, the face of B0 with the same triangle, or -1; nullptr: B is B0. Faces of
+  /// both must be in the same order (a later face of B0 is a later face of B), so that ties
+  /// between equally near faces, broken by the smaller index, break the same way.
+  const std::vector<int>* b0_face_of_b = nullptr;
+  /// A box holding every face of B that B0 does not have and every face of B0 that B does
+  /// not have.
+  GrowingBox changed;
+};
+
+/// Bounds already computed for the first pass of a mean search (MeanCellBounds), and how
+/// the search's B differs from theirs.
+struct FirstBounds {
+  const MeanCellBounds* bounds = nullptr;
+  SurfaceChange change;
+};
+
 /// m(A, B) and r(A, B) with `b_scene` an Embree scene of B. A mesh without area gives
-/// zeros with area 0.
+/// zeros with area 0. `first_bounds` (optional): the first pass's bounds of cells of another
+/// mesh against B or a B0 that differs from B only where `first_bounds->change` says: taken
+/// for A's faces with the same cells.
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
                                             const MeanDistanceOptions& options = {},
-                                            const KnownDistances& known = {});
+                                            const KnownDistances& known = {},
+                                            const FirstBounds* first_bounds = nullptr);
+
+/// The mean search's first-pass bounds of the faces of a mesh A0 against a surface B0: each
+/// face's cell (its corners in the face's order, their distances to B0 and nearest faces of
+/// B0, as surface_distance's first pass over A0's vertices gives them) with its pointwise,
+/// mean and mean-square bounds, and the box of the balls of B0 those bounds read (the
+/// closest-point and nearby-face queries). The bounds are a function of the cell, of B0
+/// inside that box and of the options' error bounds only. A search of another mesh A
+/// against a B takes them for every face of A whose cell is the same, bit for bit (its
+/// nearest faces read as B0's), where B is B0 inside the box (FirstBounds), and so gives the
+/// same result as without them. Built once per case (case_evaluation.h): the input's faces
+/// against the complete model (a repair keeps most of them), and the complete model's faces
+/// against the input (a repair differs from it only around the holes).
+class MeanCellBounds {
+ public:
+  /// `b0` is the mesh of `b0_scene` (for the faces A0 shares with it, which need no bounds).
+  MeanCellBounds(const Mesh& a0, const Mesh& b0, const embree::TriangleScene& b0_scene,
+                 const MeanDistanceOptions& options);
+  ~MeanCellBounds();
+  MeanCellBounds(const MeanCellBounds&) = delete;
+  MeanCellBounds& operator=(const MeanCellBounds&) = delete;
+  std::size_t size() const;  ///< cells held
+
+  struct Table;  ///< surface_distance.cpp
+  const Table& table() const { return *table_; }
+
+ private:
+  std::unique_ptr<Table> table_;
+};
 
 /// A value with a guaranteed interval: lower <= true value <= upper, value in between.
 using DistanceInterval = BoundedValue;
@@ -132,8 +186,12 @@ struct SurfaceDistance {
 
 /// The two-sided distances between A and B, with Embree scenes of both built by the caller
 /// (so that they are built once and reused).
+/// `a_first_bounds`, `b_first_bounds` (optional): first-pass bounds (FirstBounds) for the
+/// mean search from A to B and from B to A.
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
-                                 const SurfaceDistanceOptions& options = {});
+                                 const SurfaceDistanceOptions& options = {},
+                                 const FirstBounds* a_first_bounds = nullptr,
+                                 const FirstBounds* b_first_bounds = nullptr);
 
 }  // namespace holebench

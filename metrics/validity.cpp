@@ -2,15 +2,15 @@
 
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
+#include "metrics/growing_box.h"
+#include "metrics/kept_faces.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <set>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -52,47 +52,8 @@ double smallest_angle_degrees(const std::array<Point, 3>& t) {
   return smallest;
 }
 
-// A face's vertex indices in a canonical cyclic rotation (smallest first), as one key.
-struct IndexTriple {
-  std::array<int, 3> v;
-  bool operator==(const IndexTriple& other) const { return v == other.v; }
-};
-struct IndexTripleHash {
-  std::size_t operator()(const IndexTriple& t) const {
-    std::size_t h = 0;
-    for (int i : t.v)
-      h = h * 1000003u ^ std::hash<int>()(i);
-    return h;
-  }
-};
-IndexTriple index_triple(const Mesh& mesh, FaceHandle f) {
-  IndexTriple t;
-  int k = 0;
-  for (auto v : mesh.fv_range(f))
-    t.v[k++] = v.idx();
-  std::rotate(t.v.begin(), std::min_element(t.v.begin(), t.v.end()), t.v.end());
-  return t;
-}
-
-struct Box {
-  Point lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-           std::numeric_limits<double>::infinity()};
-  Point hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-           -std::numeric_limits<double>::infinity()};
-  void add(const Point& p) {
-    lo.minimize(p);
-    hi.maximize(p);
-  }
-  bool meets(const Box& other) const {
-    for (int i = 0; i < 3; ++i) {
-      if (hi[i] < other.lo[i] || other.hi[i] < lo[i])
-        return false;
-    }
-    return true;
-  }
-};
-Box face_box(const Mesh& mesh, FaceHandle f) {
-  Box box;
+GrowingBox face_box(const Mesh& mesh, FaceHandle f) {
+  GrowingBox box;
   for (auto v : mesh.fv_range(f))
     box.add(mesh.point(v));
   return box;
@@ -104,42 +65,15 @@ InputSelfIntersections input_self_intersections(const Mesh& input) {
   return {cgal::self_intersecting_pairs(input)};
 }
 
-cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const Mesh& repaired,
-                                                      const InputSelfIntersections& known_input) {
-  // Vertices of the repaired mesh at the input's index and, bit for bit, its point.
-  const std::size_t common =
-      std::min(input.n_vertices(), static_cast<std::size_t>(repaired.n_vertices()));
-  std::vector<char> same_vertex(common, 0);
-  for (std::size_t i = 0; i < common; ++i) {
-    const VertexHandle v(static_cast<int>(i));
-    same_vertex[i] = !repaired.status(v).deleted() && repaired.point(v) == input.point(v);
-  }
-  const auto on_same_vertices = [&](const IndexTriple& t) {
-    for (int i : t.v) {
-      if (i < 0 || static_cast<std::size_t>(i) >= common || !same_vertex[i])
-        return false;
-    }
-    return true;
-  };
-  std::unordered_map<IndexTriple, int, IndexTripleHash> input_face_of;
-  input_face_of.reserve(input.n_faces());
-  for (auto f : input.faces()) {
-    const IndexTriple t = index_triple(input, f);
-    if (on_same_vertices(t))
-      input_face_of.emplace(t, f.idx());
-  }
-  // Kept faces (repaired face -> input face, one each) and the others with their box.
-  std::vector<int> repaired_face_of_input(input.n_faces(), -1);
-  std::vector<char> kept(repaired.n_faces(), 0);
+cgal::SelfIntersections self_intersections_from_input(const Mesh& repaired,
+                                                      const InputSelfIntersections& known_input,
+                                                      const KeptFaces& kept_of_input) {
+  const auto is_kept = [&](int f) { return kept_of_input.input_face_of_repaired[f] >= 0; };
   std::vector<int> others;
-  Box others_box;
+  GrowingBox others_box;
   for (auto f : repaired.faces()) {
-    const auto it = input_face_of.find(index_triple(repaired, f));
-    if (it != input_face_of.end() && repaired_face_of_input[it->second] < 0) {
-      repaired_face_of_input[it->second] = f.idx();
-      kept[f.idx()] = 1;
+    if (is_kept(f.idx()))
       continue;
-    }
     others.push_back(f.idx());
     for (auto v : repaired.fv_range(f))
       others_box.add(repaired.point(v));
@@ -149,17 +83,18 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
   if (!others.empty()) {
     std::vector<int> tested = others;
     for (auto f : repaired.faces()) {
-      if (kept[f.idx()] && face_box(repaired, f).meets(others_box))
+      if (is_kept(f.idx()) && face_box(repaired, f).meets(others_box))
         tested.push_back(f.idx());
     }
     for (const FacePair& p : cgal::self_intersecting_pairs(repaired, tested)) {
-      if (!(kept[p.first] && kept[p.second]))
+      if (!(is_kept(p.first) && is_kept(p.second)))
         pairs.push_back(p);
     }
   }
   // The pairs of two kept faces: the input's.
   for (const auto& [a, b] : known_input.pairs) {
-    const int f = repaired_face_of_input[a], g = repaired_face_of_input[b];
+    const int f = kept_of_input.repaired_face_of_input[a];
+    const int g = kept_of_input.repaired_face_of_input[b];
     if (f >= 0 && g >= 0)
       pairs.push_back(std::minmax(f, g));
   }
@@ -172,8 +107,13 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
   return result;
 }
 
+cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const Mesh& repaired,
+                                                      const InputSelfIntersections& known_input) {
+  return self_intersections_from_input(repaired, known_input, kept_faces(input, repaired));
+}
+
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
-                  const InputSelfIntersections* known_input) {
+                  const InputSelfIntersections* known_input, const KeptFaces* kept_of_input) {
   Validity result;
   result.open_boundary_loops = find_boundary_loops(repaired).size();
 
@@ -182,22 +122,29 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
       ++result.non_manifold_vertices;
   }
 
-  std::map<std::pair<int, int>, int> directed_uses;
+  // Directed edges in order: an edge used twice or more is one conflict.
+  std::vector<std::pair<int, int>> directed_edges;
+  directed_edges.reserve(3 * repaired.n_faces());
   for (auto f : repaired.faces()) {
     std::array<int, 3> ids;
     int k = 0;
     for (auto v : repaired.fv_range(f))
       ids[k++] = v.idx();
-    for (int i = 0; i < 3; ++i) {
-      if (++directed_uses[{ids[i], ids[(i + 1) % 3]}] == 2)
-        ++result.orientation_conflicts;
-    }
+    for (int i = 0; i < 3; ++i)
+      directed_edges.emplace_back(ids[i], ids[(i + 1) % 3]);
+  }
+  std::sort(directed_edges.begin(), directed_edges.end());
+  for (std::size_t i = 1; i < directed_edges.size(); ++i) {
+    if (directed_edges[i] == directed_edges[i - 1] &&
+        (i < 2 || directed_edges[i - 2] != directed_edges[i]))
+      ++result.orientation_conflicts;
   }
 
   if (options.self_intersections) {
     cgal::SelfIntersections pairs;
     if (known_input) {
-      pairs = self_intersections_from_input(input, repaired, *known_input);
+      pairs = kept_of_input ? self_intersections_from_input(repaired, *known_input, *kept_of_input)
+                            : self_intersections_from_input(input, repaired, *known_input);
     } else {
       for (const auto& [f, g] : cgal::self_intersecting_pairs(repaired)) {
         ++pairs.pairs;
@@ -219,17 +166,24 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
       ++result.new_degenerate_faces;
   }
 
-  std::set<std::array<std::array<double, 3>, 3>> repaired_faces;
-  for (auto f : repaired.faces())
-    repaired_faces.insert(canonical(face_points(repaired, f)));
+  // An input face away from the holes that the repair kept is unchanged (the same points in
+  // the same order); the others are looked up among the repaired faces by their points.
+  std::vector<int> not_kept;
   for (auto f : input.faces()) {
     bool near_hole = false;
     for (auto v : input.fv_range(f))
       near_hole = near_hole || input.is_boundary(v);
-    if (near_hole)
-      continue;
-    if (!repaired_faces.count(canonical(face_points(input, f))))
-      ++result.original_faces_changed;
+    if (!near_hole && !(kept_of_input && kept_of_input->repaired_face_of_input[f.idx()] >= 0))
+      not_kept.push_back(f.idx());
+  }
+  if (!not_kept.empty()) {
+    std::set<std::array<std::array<double, 3>, 3>> repaired_faces;
+    for (auto f : repaired.faces())
+      repaired_faces.insert(canonical(face_points(repaired, f)));
+    for (int f : not_kept) {
+      if (!repaired_faces.count(canonical(face_points(input, input.face_handle(f)))))
+        ++result.original_faces_changed;
+    }
   }
   return result;
 }

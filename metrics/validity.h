@@ -19,6 +19,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "metrics/kept_faces.h"
 
 #include <cstddef>
 #include <utility>
@@ -68,18 +69,23 @@ InputSelfIntersections input_self_intersections(const Mesh& input);
 /// from input_self_intersections), the self-intersections are counted from them and from a
 /// test of the faces that are not the input's and of the input's faces in their bounding box
 /// (self_intersections_from_input): the same counts as the test of the whole repaired mesh.
+/// `kept_of_input` (optional): kept_faces(input, repaired), where the caller has it.
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {},
-                  const InputSelfIntersections* known_input = nullptr);
+                  const InputSelfIntersections* known_input = nullptr,
+                  const KeptFaces* kept_of_input = nullptr);
 
 /// The self-intersections of `repaired` from the input's own pairs. The faces of `repaired`
-/// with exactly the input's vertex indices, on vertices at exactly the input's points, are
-/// the input's faces (kept): two kept faces intersect in `repaired` exactly when they do in
+/// that are the input's (kept_faces.h; a rotated face is not kept, only tested again): two
+/// kept faces intersect in `repaired` exactly when they do in
 /// the input (the same points and the same shared vertices). Every other pair has a face
 /// that is not kept, whose box lies in the bounding box of those faces: CGAL tests those
 /// faces and the kept faces whose box meets that bounding box, and the pairs of two kept
 /// faces it finds there are the input's.
 cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const Mesh& repaired,
                                                       const InputSelfIntersections& known_input);
+cgal::SelfIntersections self_intersections_from_input(const Mesh& repaired,
+                                                      const InputSelfIntersections& known_input,
+                                                      const KeptFaces& kept_of_input);
 
 namespace cgal {
 /// CGAL::Polygon_mesh_processing::self_intersections on the mesh itself (CGAL's OpenMesh

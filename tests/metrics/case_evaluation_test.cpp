@@ -3,6 +3,7 @@
 #include "metrics/case_evaluation.h"
 
 #include "core/boundary_loops.h"
+#include "core/geometry.h"
 #include "generators/case_catalog.h"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,9 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       const CaseEvaluation shared(c, options);
       ASSERT_NE(shared.complete_scene(), nullptr);
       ASSERT_NE(shared.input_self_intersections(), nullptr);
+      ASSERT_NE(shared.input_cell_bounds(), nullptr);
+      if (noise > 0.0)  // no input face lies on the complete model: each has its bounds
+        EXPECT_GT(shared.input_cell_bounds()->size(), c.input.n_faces() / 2);
       const std::string what = std::string(id) + " noise " + std::to_string(noise);
       MethodResult fan;
       fan.repaired = fan_closing(c.input);
@@ -60,6 +64,14 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       exact.repaired = exact_closing(c);
       expect_same_metrics(evaluate(c, exact, options), evaluate(c, exact, options, shared),
                           what + " exact");
+      // A repair that also moved an input vertex away from the holes: the faces around it are
+      // not the input's, and the bounds read near them are not taken.
+      MethodResult moved = fan;
+      const VertexHandle v = moved.repaired.vertex_handle(0);
+      ASSERT_FALSE(moved.repaired.is_boundary(v));
+      moved.repaired.point(v) += Point(1.0, 1.0, 1.0) * (0.01 * bounding_box_diagonal(c.complete));
+      expect_same_metrics(evaluate(c, moved, options), evaluate(c, moved, options, shared),
+                          what + " moved");
       MethodResult open;
       open.repaired = c.input;
       expect_same_metrics(evaluate(c, open, options), evaluate(c, open, options, shared),
