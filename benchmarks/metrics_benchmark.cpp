@@ -421,7 +421,7 @@ void BM_Runner_OneCasePerGroup(benchmark::State& state) {
   const auto jobs = nightly_jobs_of_one_case();
   for (auto _ : state) {
     harness::PreparedCase prepared = harness::prepare_case(jobs.front(), {});
-    harness::share_evaluation(prepared, {});
+    harness::share_case_work(prepared, {});
     for (const auto& job : jobs)
       benchmark::DoNotOptimize(
           harness::run_job_on_case(job, prepared, &job == &jobs.front(), {}).status);

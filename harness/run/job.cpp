@@ -47,7 +47,7 @@ PreparedCase prepare_case(const Job& job, const JobOptions& options) {
   return prepared;
 }
 
-void share_evaluation(PreparedCase& prepared, const JobOptions& options) {
+void share_case_work(PreparedCase& prepared, const JobOptions& options) {
   if (prepared.failure)
     return;
   try {
@@ -56,6 +56,15 @@ void share_evaluation(PreparedCase& prepared, const JobOptions& options) {
     prepared.evaluation_seconds = seconds_since(start);
   } catch (const std::exception&) {
     prepared.evaluation.reset();  // each job evaluates on its own, and reports its failure
+  }
+  if (options.snapshot_dir.empty())
+    return;
+  try {
+    const auto start = Clock::now();
+    prepared.picture = std::make_shared<const render::CasePicture>(prepared.c);
+    prepared.picture_seconds = seconds_since(start);
+  } catch (const std::exception&) {
+    prepared.picture.reset();  // each job draws on its own, and reports its failure
   }
 }
 
@@ -125,10 +134,14 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
     if (!options.snapshot_dir.empty()) {
       const auto path = options.snapshot_dir / (file_stem_of_id(job.id()) + ".png");
       const auto snapshot_start = Clock::now();
-      render::write_png(render::job_picture(c, result), path);
+      render::write_png(prepared.picture ? render::job_picture(c, result, *prepared.picture)
+                                         : render::job_picture(c, result),
+                        path);
       if (!options.viewer_mesh_dir.empty())
-        viewer::write_job_meshes(c, result.repaired, job, options.viewer_mesh_dir);
-      record.stages.push_back({"snapshot", seconds_since(snapshot_start)});
+        viewer::write_job_meshes(c, result.repaired, job, options.viewer_mesh_dir, {},
+                                 prepared.picture ? &prepared.picture->complete_scene() : nullptr);
+      record.stages.push_back({"snapshot", seconds_since(snapshot_start) +
+                                               (first_of_group ? prepared.picture_seconds : 0.0)});
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
     }
   } catch (const InvalidInputError& e) {

@@ -17,6 +17,10 @@
 #include <utility>
 #include <vector>
 
+namespace holebench::render {
+class CasePicture;
+}
+
 namespace holebench::harness {
 
 struct Job {
@@ -106,9 +110,13 @@ struct PreparedCase {
   Case c;
   double seconds = 0.0;  ///< wall time of making it
   /// What the evaluations of its jobs share (metrics/case_evaluation.h), built once for a
-  /// group of jobs (share_evaluation); nullptr: each job's evaluation builds its own.
+  /// group of jobs (share_case_work); nullptr: each job's evaluation builds its own.
   std::shared_ptr<const CaseEvaluation> evaluation;
   double evaluation_seconds = 0.0;  ///< wall time of building `evaluation`
+  /// What the pictures of its jobs share (harness/outputs/render/close_up.h), built once for
+  /// a group of jobs that render snapshots; nullptr: each job's picture builds its own.
+  std::shared_ptr<const render::CasePicture> picture;
+  double picture_seconds = 0.0;  ///< wall time of building `picture`
   /// Set when the case could not be made: the status (invalid_input, out_of_memory) and
   /// message every job of it gets.
   std::optional<std::pair<JobStatus, std::string>> failure;
@@ -117,15 +125,18 @@ struct PreparedCase {
 /// Makes the case of `job` (its id, noise level and seed). Never throws.
 PreparedCase prepare_case(const Job& job, const JobOptions& options);
 
-/// Builds what the evaluations of a prepared case's jobs share (PreparedCase::evaluation),
-/// for a group of jobs on one case. Where it cannot be built (out of memory, an exception),
-/// the jobs build their own, as they would without it. Never throws.
-void share_evaluation(PreparedCase& prepared, const JobOptions& options);
+/// Builds what the evaluations and the pictures of a prepared case's jobs share
+/// (PreparedCase::evaluation, PreparedCase::picture where `options` render snapshots), for a
+/// group of jobs on one case. Where one cannot be built (out of memory, an exception), the
+/// jobs build their own, as they would without it. The records are the same either way.
+/// Never throws.
+void share_case_work(PreparedCase& prepared, const JobOptions& options);
 
 /// Runs the method of `job` on a prepared case, evaluates, renders. The first job of a
 /// group (`first_of_group`) carries the making of the case in its "case" stage and the
 /// building of the shared evaluation in its "evaluation" stage, the others 0 for them, so
-/// that the stages of a run add up to its work. Never throws: every failure becomes the
+/// that the stages of a run add up to its work (and the building of the shared picture in
+/// its "snapshot" stage). Never throws: every failure becomes the
 /// record's status and message.
 JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool first_of_group,
                           const JobOptions& options);

@@ -171,7 +171,7 @@ RunSummary run_jobs(const RunOptions& options) {
           tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads_per_job));
       auto made = std::make_shared<PreparedCase>(prepare_case(group.front(), job_options));
       if (group.size() > 1)
-        share_evaluation(*made, job_options);
+        share_case_work(*made, job_options);
       std::shared_ptr<const PreparedCase> prepared = std::move(made);
       const std::string first = group.front().id();
       return [threads, prepared, first, &job_options](const Job& job) {

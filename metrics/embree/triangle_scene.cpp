@@ -49,6 +49,7 @@ RTCDevice shared_device() {
 struct PointQueryState {
   const std::vector<std::array<Point, 3>>* triangles;
   Point query;
+  double coordinate_sum = 0.0;  // |x| + |y| + |z| of the query: the scale of its rounding
   double best_distance = std::numeric_limits<double>::infinity();
   unsigned best_primitive = RTC_INVALID_GEOMETRY_ID;
   Point best_point;
@@ -66,9 +67,12 @@ bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
   state->best_distance = distance;
   state->best_primitive = args->primID;
   state->best_point = q;
-  // Round the radius up so that single precision never culls a closer triangle.
+  // Padded by the single-precision rounding of the BVH's boxes and of the query point, then
+  // rounded up, so that single precision never culls a closer triangle: the answer is the
+  // nearest triangle (the smallest index among equals) whatever the BVH's layout.
+  const double pad = 1e-6 * (state->coordinate_sum + distance);
   args->query->radius =
-      std::nextafter(static_cast<float>(distance), std::numeric_limits<float>::infinity());
+      std::nextafter(static_cast<float>(distance + pad), std::numeric_limits<float>::infinity());
   return true;
 }
 
@@ -207,6 +211,7 @@ ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_
   PointQueryState state;
   state.triangles = &triangles_;
   state.query = p;
+  state.coordinate_sum = std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]);
   RTCPointQuery query;
   query.x = static_cast<float>(p[0]);
   query.y = static_cast<float>(p[1]);

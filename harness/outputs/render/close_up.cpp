@@ -177,10 +177,26 @@ Camera whole_model_camera(const Case& c, const Point& direction) {
   return frame_sphere(box.center(), 0.5 * box.diagonal(), direction, kFieldOfViewDegrees);
 }
 
+CasePicture::CasePicture(const Case& c, const CloseUpOptions& options)
+    : complete_scene_(std::make_unique<embree::TriangleScene>(c.complete)),
+      scale_(case_heat_scale(c)) {
+  const std::size_t close_ups =
+      std::min(c.holes.size(), static_cast<std::size_t>(std::max(0, options.max_close_ups)));
+  for (std::size_t hole = 0; hole < close_ups; ++hole)
+    hole_views_.push_back(hole_view(c, hole, options));
+}
+
+CasePicture::~CasePicture() = default;
+
 Image job_picture(const Case& c, const MethodResult& result, const CloseUpOptions& options) {
-  const HeatScale scale = case_heat_scale(c);
+  return job_picture(c, result, CasePicture(c, options), options);
+}
+
+Image job_picture(const Case& c, const MethodResult& result, const CasePicture& shared,
+                  const CloseUpOptions& options) {
+  const HeatScale& scale = shared.scale();
   const double diagonal = bounding_box(c.complete).diagonal();
-  const embree::TriangleScene truth(c.complete);
+  const embree::TriangleScene& truth = shared.complete_scene();
   const Mesh& mesh = result.repaired;
   SnapshotOptions snapshot;
   snapshot.width = snapshot.height = options.view_size;
@@ -192,17 +208,18 @@ Image job_picture(const Case& c, const MethodResult& result, const CloseUpOption
   };
   const Overlay overlay = job_overlay(c, result);
 
-  const std::size_t close_ups =
-      std::min(c.holes.size(), static_cast<std::size_t>(std::max(0, options.max_close_ups)));
+  // One scene of the repaired mesh for every view.
+  const embree::TriangleScene scene(mesh);
   std::vector<Image> views;
   Point side(-1, -1, -1);
-  for (std::size_t hole = 0; hole < close_ups; ++hole) {
-    const HoleView view = hole_view(c, hole, options);
+  for (std::size_t hole = 0; hole < shared.hole_views().size(); ++hole) {
+    const HoleView& view = shared.hole_views()[hole];
     if (hole == 0)
       side = view.camera.direction;
-    views.push_back(render_snapshot(mesh, view.camera, snapshot, overlay));
+    views.push_back(render_with_depth(mesh, scene, view.camera, snapshot, overlay).image);
   }
-  views.push_back(render_snapshot(mesh, whole_model_camera(c, side), snapshot, overlay));
+  views.push_back(
+      render_with_depth(mesh, scene, whole_model_camera(c, side), snapshot, overlay).image);
 
   const int gap = 4;
   const int width =

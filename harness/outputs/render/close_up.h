@@ -8,7 +8,12 @@
 #include "harness/outputs/render/snapshot.h"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
+
+namespace holebench::embree {
+class TriangleScene;
+}
 
 namespace holebench::render {
 
@@ -40,11 +45,36 @@ HoleView hole_view(const Case& c, std::size_t hole, const CloseUpOptions& option
 /// The whole model seen along `direction`, framed on its bounding sphere.
 Camera whole_model_camera(const Case& c, const Point& direction);
 
+/// What the pictures of one case's jobs share, whatever the method: the complete model's
+/// Embree scene (the patch's distances), the case's heat scale and the close-up views of its
+/// first holes. Built once per case instance for a group of jobs (harness/run/job.h).
+class CasePicture {
+ public:
+  CasePicture(const Case& c, const CloseUpOptions& options = {});
+  ~CasePicture();
+  CasePicture(const CasePicture&) = delete;
+  CasePicture& operator=(const CasePicture&) = delete;
+
+  const embree::TriangleScene& complete_scene() const { return *complete_scene_; }
+  const HeatScale& scale() const { return scale_; }
+  /// hole_view of the first min(holes, options.max_close_ups) holes.
+  const std::vector<HoleView>& hole_views() const { return hole_views_; }
+
+ private:
+  std::unique_ptr<embree::TriangleScene> complete_scene_;
+  HeatScale scale_;
+  std::vector<HoleView> hole_views_;
+};
+
 /// The picture of a job: one close-up per hole (up to options.max_close_ups), the whole
 /// model seen from the first hole's side, and the case's colour bar (case_heat_scale), side
 /// by side. Kept faces grey, the patch (new faces) by its distance to the complete model,
 /// open boundary loops of the repaired mesh in magenta, guidance arrows in blue.
 Image job_picture(const Case& c, const MethodResult& result, const CloseUpOptions& options = {});
+/// The same with what the case's pictures share (built from `c` with the same options): the
+/// same picture.
+Image job_picture(const Case& c, const MethodResult& result, const CasePicture& shared,
+                  const CloseUpOptions& options = {});
 
 /// The colour of kept faces in job pictures and in the viewer.
 Rgb kept_colour();

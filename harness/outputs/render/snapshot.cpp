@@ -204,6 +204,12 @@ Image render_snapshot(const Mesh& mesh, const Camera& camera, const SnapshotOpti
 Rendering render_with_depth(const Mesh& mesh, const Camera& camera, const SnapshotOptions& options,
                             const Overlay& overlay) {
   const embree::TriangleScene scene(mesh);
+  return render_with_depth(mesh, scene, camera, options, overlay);
+}
+
+Rendering render_with_depth(const Mesh& mesh, const embree::TriangleScene& scene,
+                            const Camera& camera, const SnapshotOptions& options,
+                            const Overlay& overlay) {
   // The overlay's solids in one scene of their own, with each triangle's colour.
   TriangleSoup solids;
   std::vector<Rgb> solid_colour;

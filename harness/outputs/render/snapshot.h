@@ -11,6 +11,10 @@
 #include <optional>
 #include <vector>
 
+namespace holebench::embree {
+class TriangleScene;
+}
+
 namespace holebench::render {
 
 struct Camera {
@@ -82,6 +86,11 @@ struct Rendering {
 /// render_snapshot, keeping the depth buffer.
 Rendering render_with_depth(const Mesh& mesh, const Camera& camera,
                             const SnapshotOptions& options = {}, const Overlay& overlay = {});
+/// The same with the mesh's Embree scene built by the caller (once for several views; a
+/// scene of `mesh` itself, SceneBuild::fast_queries: the same picture).
+Rendering render_with_depth(const Mesh& mesh, const embree::TriangleScene& scene,
+                            const Camera& camera, const SnapshotOptions& options = {},
+                            const Overlay& overlay = {});
 
 /// Where a point lands in a picture of `width` x `height` taken by `camera`.
 struct Projection {

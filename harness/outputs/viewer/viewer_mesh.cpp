@@ -170,9 +170,15 @@ void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path,
 }
 
 void write_repaired_mesh(const Case& c, const Mesh& repaired, const std::filesystem::path& path,
-                         const ViewerMeshOptions& options) {
+                         const ViewerMeshOptions& options,
+                         const embree::TriangleScene* complete_scene) {
   const double diagonal = bounding_box(c.complete).diagonal();
-  const embree::TriangleScene truth(c.complete, embree::SceneBuild::fast_build);
+  // A scene of our own where none is given (fast to build: a closest point per split
+  // corner; the answers are the same either way).
+  std::optional<embree::TriangleScene> own;
+  if (!complete_scene)
+    own.emplace(c.complete, embree::SceneBuild::fast_build);
+  const embree::TriangleScene& truth = complete_scene ? *complete_scene : *own;
   ViewerPly ply = kept_faces(repaired, false);
   ply.heat_scale_max_rel_diag = render::case_heat_scale(c).max_rel_diag;
   const double target = std::max(options.target_edge_rel_diag * diagonal, 1e-300);
@@ -197,7 +203,8 @@ void write_repaired_mesh(const Case& c, const Mesh& repaired, const std::filesys
 }
 
 void write_job_meshes(const Case& c, const Mesh& repaired, const harness::Job& job,
-                      const std::filesystem::path& out_dir, const ViewerMeshOptions& options) {
+                      const std::filesystem::path& out_dir, const ViewerMeshOptions& options,
+                      const embree::TriangleScene* complete_scene) {
   const auto complete = out_dir / complete_mesh_file(job);
   const auto holed = out_dir / holed_mesh_file(job);
   if (!std::filesystem::exists(complete) || !std::filesystem::exists(holed)) {
@@ -207,7 +214,7 @@ void write_job_meshes(const Case& c, const Mesh& repaired, const harness::Job& j
     write_plain_mesh(c.complete, complete, direction);
     write_plain_mesh(c.input, holed, direction);
   }
-  write_repaired_mesh(c, repaired, out_dir / repaired_mesh_file(job), options);
+  write_repaired_mesh(c, repaired, out_dir / repaired_mesh_file(job), options, complete_scene);
 }
 
 }  // namespace holebench::viewer

@@ -25,6 +25,10 @@
 #include <optional>
 #include <string>
 
+namespace holebench::embree {
+class TriangleScene;
+}
+
 namespace holebench::viewer {
 
 struct ViewerMeshOptions {
@@ -49,13 +53,16 @@ void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path,
                       const std::optional<Point>& view_direction = std::nullopt);
 
 /// Writes the repaired mesh with its new faces split and coloured by distance to
-/// `c.complete`. Throws std::runtime_error.
+/// `c.complete`; `complete_scene` (optional): an Embree scene of `c.complete` built by the
+/// caller. Throws std::runtime_error.
 void write_repaired_mesh(const Case& c, const Mesh& repaired, const std::filesystem::path& path,
-                         const ViewerMeshOptions& options = {});
+                         const ViewerMeshOptions& options = {},
+                         const embree::TriangleScene* complete_scene = nullptr);
 
 /// Writes the three files of a job into out_dir (the complete and holed meshes only if
 /// they are not there yet).
 void write_job_meshes(const Case& c, const Mesh& repaired, const harness::Job& job,
-                      const std::filesystem::path& out_dir, const ViewerMeshOptions& options = {});
+                      const std::filesystem::path& out_dir, const ViewerMeshOptions& options = {},
+                      const embree::TriangleScene* complete_scene = nullptr);
 
 }  // namespace holebench::viewer

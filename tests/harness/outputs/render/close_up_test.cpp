@@ -174,5 +174,31 @@ TEST(CloseUp, JobPictureHasTheViewsAndTheColourBar) {
   EXPECT_EQ(picture.height, 64);
 }
 
+// Pictures drawn with what the case's pictures share (as a group of jobs draws them) are the
+// pictures drawn alone, byte for byte: a patch coloured by its distance, the open input.
+TEST(CloseUp, JobPictureWithTheCasesSharedPartsIsTheSame) {
+  const Case c = generators::make_case("cad/fandisk/edge_convex/small", 0, 5.0);
+  MethodResult filled;
+  filled.repaired = c.complete;
+  for (const auto& hole : c.holes) {
+    for (int f : hole.removed_faces)
+      filled.repaired.data(filled.repaired.face_handle(f)).provenance = Provenance::New;
+  }
+  CloseUpOptions options;
+  options.view_size = 96;
+  const CasePicture shared(c, options);
+  EXPECT_EQ(shared.hole_views().size(),
+            std::min(c.holes.size(), static_cast<std::size_t>(options.max_close_ups)));
+  MethodResult open;
+  open.repaired = c.input;
+  // One shared part for two jobs, in turn: it carries nothing of the first to the second.
+  for (const MethodResult* result : {&filled, &open, &filled}) {
+    const Image alone = job_picture(c, *result, options);
+    const Image with_shared = job_picture(c, *result, shared, options);
+    ASSERT_EQ(alone.width, with_shared.width);
+    EXPECT_TRUE(alone.pixels == with_shared.pixels);
+  }
+}
+
 }  // namespace
 }  // namespace holebench::render
