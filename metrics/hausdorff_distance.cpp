@@ -91,6 +91,69 @@ class DirectedSearch {
     return bound;
   }
 
+  // Bound (iii): two triangles of B that share an edge (the same two points, bit for bit)
+  // and lie nearly in one plane, as on a flat part of B triangulated otherwise than A. Their
+  // union projected onto the first one's plane P is a quadrilateral Q; where Q is convex,
+  // the distance to Q is convex, so its maximum over the cell is at a corner. Every point of
+  // Q lies within delta of the second triangle or is a point of the first (delta: the second
+  // triangle's third vertex from P), so d(x, B) <= d(x, Q) + delta. Without it, a cell that
+  // straddles the shared edge is split until it is within the error bound of the edge,
+  // which on a flat region triangulated otherwise takes cells along every such edge.
+  // Infinity where the two triangles do not qualify.
+  double shared_edge_bound(const std::array<Point, 3>& corners, int face1, int face2) const {
+    const auto& t1 = scene_.triangle_of_face(face1);
+    const auto& t2 = scene_.triangle_of_face(face2);
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    // The shared edge (a, b) and the third vertices p of t1 and q of t2.
+    int shared1[2], shared2[2], count = 0;
+    for (int i = 0; i < 3 && count <= 2; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        if (t1[i] == t2[j]) {
+          if (count < 2) {
+            shared1[count] = i;
+            shared2[count] = j;
+          }
+          ++count;
+        }
+      }
+    }
+    if (count != 2)
+      return kNone;
+    const Point& a = t1[shared1[0]];
+    const Point& b = t1[shared1[1]];
+    const Point& p = t1[3 - shared1[0] - shared1[1]];
+    const Point& q = t2[3 - shared2[0] - shared2[1]];
+    Point n = OpenMesh::cross(b - a, p - a);
+    const double twice_area = n.norm();
+    if (!(twice_area > 0.0))
+      return kNone;
+    n /= twice_area;
+    const double height = OpenMesh::dot(q - a, n);
+    const double delta = std::abs(height);
+    const Point q_on_plane = q - height * n;
+    // Convex: p and q' strictly on either side of the line ab, and a and b of the line pq'
+    // (each orientation well clear of rounding: 1e-9 of its scale).
+    const double scale =
+        std::max({(b - a).sqrnorm(), (p - a).sqrnorm(), (q_on_plane - a).sqrnorm()});
+    const auto side = [&n](const Point& o, const Point& u, const Point& v) {
+      return OpenMesh::dot(OpenMesh::cross(u - o, v - o), n);
+    };
+    const double clear = 1e-9 * scale;
+    const double s1 = side(a, b, p), s2 = side(a, b, q_on_plane);
+    const double s3 = side(p, q_on_plane, a), s4 = side(p, q_on_plane, b);
+    if (!((s1 > clear && s2 < -clear) || (s1 < -clear && s2 > clear)) ||
+        !((s3 > clear && s4 < -clear) || (s3 < -clear && s4 > clear)))
+      return kNone;
+    double bound = 0.0;
+    for (const Point& c : corners) {
+      const double to_first = (closest_point_on_triangle(c, t1[0], t1[1], t1[2]) - c).norm();
+      const double to_second = (closest_point_on_triangle(c, a, b, q_on_plane) - c).norm();
+      bound = std::max(bound, std::min(to_first, to_second));
+    }
+    // Plus the rounding of the projection and of the distances (1e-12 of the size).
+    return bound + delta + 1e-12 * std::sqrt(scale);
+  }
+
   // The cell's upper bound and the distance found at its centroid: at most one query, no
   // shared state (the first cells are bounded in parallel). `settled`: a cell whose upper
   // bound is at most this needs no more work (it will never be split), so the centroid
@@ -118,6 +181,13 @@ class DirectedSearch {
       const int face = cell.corner_face[i];
       if (face >= 0 && (i == 0 || face != cell.corner_face[i - 1]))
         bound.upper = std::min(bound.upper, single_triangle_bound(c, face));
+    }
+    if (bound.upper <= settled)
+      return bound;
+    for (int i = 0; i < 3 && bound.upper > settled; ++i) {
+      const int f1 = cell.corner_face[i], f2 = cell.corner_face[(i + 1) % 3];
+      if (f1 >= 0 && f2 >= 0 && f1 != f2)
+        bound.upper = std::min(bound.upper, shared_edge_bound(c, f1, f2));
     }
     if (bound.upper <= settled)
       return bound;

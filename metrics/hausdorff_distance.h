@@ -9,7 +9,11 @@
 //        to a triangle is convex, so its maximum over t is at a corner; T is tried among
 //        the triangles nearest to t's centroid and corners), and
 //    (ii) max over the corners of d(corner, B) + longest edge / sqrt(3) (every point of t
-//        lies within that of a corner, and d(., B) is 1-Lipschitz);
+//        lies within that of a corner, and d(., B) is 1-Lipschitz), and
+//    (iii) for two triangles of B nearest to t's corners that share an edge and whose union,
+//        projected onto the first one's plane, is a convex quadrilateral Q: max over t's
+//        corners of d(corner, Q) + the second triangle's height above that plane (a flat
+//        region of B triangulated otherwise than A);
 //  - the triangle with the largest U is split in four until U <= L + error_bound.
 // The true value then lies in [lower, upper] with upper - lower <= error_bound (unless the
 // work limit stops the search first, which the result says). Every closest-point query

@@ -70,6 +70,27 @@ TEST(HausdorffDistance, ParallelSquaresAtAKnownDistance) {
   EXPECT_LE(result.upper(), 0.3 + 1e-4);
 }
 
+// One flat square triangulated two ways (4 x 4 and 5 x 5 cells) is at distance zero both
+// ways. A cell that straddles an edge between two of the other mesh's triangles is bounded
+// by their union (bound iii, a convex quadrilateral), so only cells around the other mesh's
+// vertices are split: with a bound of 1e-6 the search converges in a few thousand queries
+// (with single triangles only, it would split along every edge down to 1e-6 and stop at
+// the query limit, unconverged).
+TEST(HausdorffDistance, OneFlatSquareTriangulatedTwoWaysConvergesAtZero) {
+  const Mesh coarse = build_mesh(test::grid_soup(4));
+  TriangleSoup fine = test::grid_soup(5);
+  for (auto& p : fine.points)
+    p *= 4.0 / 5.0;
+  HausdorffOptions options;
+  options.error_bound = 1e-6;
+  options.max_queries = 200'000;
+  const auto result = hausdorff_distance(coarse, build_mesh(fine), options);
+  EXPECT_TRUE(result.converged());
+  EXPECT_LE(result.lower(), 1e-15);
+  EXPECT_LE(result.upper(), 1e-6);
+  EXPECT_LT(result.a_to_b.queries + result.b_to_a.queries, 100'000u);
+}
+
 // Analytic one-sided distances: a 3x3 grid against its first two columns (x <= 2). The
 // farthest point of the full grid from the part is at x = 3: distance 1; the other way 0.
 TEST(HausdorffDistance, OneSidedDistancesDiffer) {
