@@ -15,7 +15,6 @@ struct GrowingBox {
   Point hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
            -std::numeric_limits<double>::infinity()};
 
-  bool empty() const { return !(lo[0] <= hi[0]); }
   void add(const Point& p) {
     lo.minimize(p);
     hi.maximize(p);
@@ -24,12 +23,6 @@ struct GrowingBox {
   void add_ball(const Point& center, double radius) {
     add(center - Point(radius, radius, radius));
     add(center + Point(radius, radius, radius));
-  }
-  void add(const GrowingBox& other) {
-    if (other.empty())
-      return;
-    add(other.lo);
-    add(other.hi);
   }
   /// Whether the boxes share a point (touching counts).
   bool meets(const GrowingBox& other) const {

@@ -33,11 +33,6 @@ IndexTriple index_triple(const Mesh& mesh, FaceHandle f) {
 
 }  // namespace
 
-bool KeptFaces::all_kept() const {
-  return std::none_of(repaired_face_of_input.begin(), repaired_face_of_input.end(),
-                      [](int f) { return f < 0; });
-}
-
 KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
   KeptFaces kept;
   kept.repaired_face_of_input.assign(input.n_faces(), -1);

@@ -19,7 +19,6 @@ struct KeptFaces {
   /// The kept faces are in the input's order (a later input face has a later repaired face),
   /// so that "the smallest face index" picks the same face in both meshes.
   bool order_kept = true;
-  bool all_kept() const;  ///< every input face is kept
 };
 
 KeptFaces kept_faces(const Mesh& input, const Mesh& repaired);
