@@ -4,6 +4,7 @@
 
 #include "core/case.h"
 #include "core/mesh.h"
+#include "core/method_layers.h"
 
 #include <cmath>
 #include <optional>
@@ -68,6 +69,9 @@ struct MethodResult {
   MethodStatus status = MethodStatus::Ok;
   std::string message;
   std::vector<PhaseTiming> phases;
+  /// The method's steps as geometry (core/method_layers.h), filled only when
+  /// MethodParameters::record_layers asks: drawn, never measured.
+  std::vector<MethodLayer> layers;
 };
 
 }  // namespace holebench

@@ -31,6 +31,11 @@ namespace {
 
 constexpr double kStructureSizeRelDiag = 0.06;
 
+// The models the "gear_tooth" target is listed for (punch_targets.h): gears.
+bool is_gear_model(const std::string& family, const std::string& name) {
+  return family == "cad" && name == "pinion";
+}
+
 std::shared_ptr<const AnalysedModel> procedural_model(const std::string& name) {
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
@@ -58,6 +63,7 @@ struct CaseCatalog::State {
     options.structure_size_rel_diag = kStructureSizeRelDiag;
     options.shape_seed = stable_hash(id);
     options.keep_input_regions = model.regions_are_brep_faces;
+    options.shrink_to_target = family == "solid";
     Case c = make_punched_case(model, target, options);
     c.id = id;
     c.family = family;
@@ -74,7 +80,10 @@ struct CaseCatalog::State {
       skipped.push_back({family + "/" + name, e.what()});
       return;
     }
-    for (const auto& target : find_punch_targets(*model)) {
+    std::vector<PunchTarget> targets = find_punch_targets(*model);
+    if (is_gear_model(family, name))
+      targets.push_back(find_gear_tooth_target(*model));
+    for (const auto& target : targets) {
       for (const auto& size : punch_size_classes()) {
         const std::string id = fmt::format("{}/{}/{}/{}", family, name, target.kind, size.name);
         add({id, family, target.kind,
@@ -133,6 +142,13 @@ struct CaseCatalog::State {
     if (family == "brep")
       return make_brep_case(id);
     if (family == "crease" && parts.size() == 3 && options.include_cad) {
+      if (parts[2] == "concave_corner") {
+        if (auto load = loader("cad", parts[1])) {
+          CreaseHoleOptions concave;
+          concave.concave_corner = true;
+          return make_crease_hole_case(*load(), 3, id, concave);
+        }
+      }
       for (const auto& creases : {"1", "2", "3"}) {
         if (parts[2] != creases)
           continue;
@@ -154,7 +170,10 @@ struct CaseCatalog::State {
     if (parts.size() == 4) {
       if (auto load = loader(family, parts[1])) {
         const auto model = load();  // throws InvalidInputError for an unusable model
-        for (const auto& target : find_punch_targets(*model)) {
+        std::vector<PunchTarget> targets = find_punch_targets(*model);
+        if (is_gear_model(family, parts[1]))
+          targets.push_back(find_gear_tooth_target(*model));
+        for (const auto& target : targets) {
           if (target.kind != parts[2])
             continue;
           for (const auto& size : punch_size_classes()) {
@@ -210,6 +229,10 @@ struct CaseCatalog::State {
                fmt::format("{}, a hole across {} crease{} (crest-line paper, figures 10, 13)",
                            source.name, creases, creases == 1 ? "" : "s")});
         }
+        add({fmt::format("crease/{}/concave_corner", source.name), "crease", "concave_corner",
+             fmt::format("{}, a hole at a concave corner of three creases (crest-line paper, "
+                         "figure 12)",
+                         source.name)});
       }
     }
     if (listed_family("file")) {

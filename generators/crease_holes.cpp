@@ -59,6 +59,8 @@ std::optional<CreaseTarget> find_crease_target(const AnalysedModel& model, int c
     };
     if (creases == 3) {
       for (const auto& corner : model.features.corners) {
+        if (options.concave_corner && corner.signature().find('r') == std::string::npos)
+          continue;
         int incident = 0;
         for (const auto& chain : chains) {
           incident += (!chain.closed && (chain.vertices.front() == corner.vertex ||
@@ -84,7 +86,8 @@ Case make_crease_hole_case(const AnalysedModel& model, int creases, const std::s
   const auto target = find_crease_target(model, creases, options);
   if (!target) {
     throw std::invalid_argument("model '" + model.name + "' has no place where a hole crosses " +
-                                std::to_string(creases) + " creases");
+                                std::to_string(creases) + " creases" +
+                                (options.concave_corner ? " at a concave corner" : ""));
   }
   PunchedCaseOptions punch;
   punch.radius_rel_diag = target->radius_rel_diag;

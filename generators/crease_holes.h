@@ -1,7 +1,9 @@
 // Holes across 1, 2 and 3 creases of the fandisk: the cases of the crest-line paper's
 // figures 10 and 13 (one hole with one ridge through it, one with two, one at a corner).
 //
-// Ids: "crease/<model>/<n>" with n = 1, 2, 3 (the catalog lists them for the fandisk).
+// Ids: "crease/<model>/<n>" with n = 1, 2, 3, and "crease/<model>/concave_corner" (figure 12:
+// three creases at a corner, one of them at least reflex); the catalog lists them for the
+// fandisk.
 #pragma once
 
 #include "core/case.h"
@@ -18,6 +20,9 @@ struct CreaseHoleOptions {
   std::vector<double> radii_rel_diag = {0.03, 0.025, 0.035, 0.04, 0.045, 0.05};
   double irregularity = 0.25;  ///< as punched cases: the radius varies by up to this fraction
   double structure_size_rel_diag = 0.06;
+  /// n = 3 only: the corner must be concave, one of its three creases at least reflex (the
+  /// crest-line paper's figure 12, "a concave corner hole" of the fandisk).
+  bool concave_corner = false;
 };
 
 /// Where to punch a hole across exactly `creases` sharp-edge chains (1, 2 or 3), and how

@@ -162,8 +162,104 @@ Mesh make_cone(const RevolvedSolidOptions& o) {
   return segmented(revolve(rings, o.segments), "cone generator");
 }
 
+namespace {
+
+// The point of the sweep at parameter t, radial offset rho and axial offset zeta.
+Point helix_point(const HelicalSweepOptions& o, double t, double rho, double zeta) {
+  return Point((o.radius + rho) * portable_cos(t), (o.radius + rho) * portable_sin(t),
+               o.pitch * t / (2.0 * kPi) + zeta);
+}
+
+// Orients triangle `t` of `soup` so that its normal points away from `inside`.
+void orient_away_from(TriangleSoup& soup, std::array<int, 3>& t, const Point& inside) {
+  const Point& a = soup.points[t[0]];
+  const Point normal = OpenMesh::cross(soup.points[t[1]] - a, soup.points[t[2]] - a);
+  const Point centroid = (a + soup.points[t[1]] + soup.points[t[2]]) / 3.0;
+  if (OpenMesh::dot(normal, centroid - inside) < 0.0)
+    std::swap(t[1], t[2]);
+}
+
+}  // namespace
+
+Mesh make_helical_sweep(const HelicalSweepOptions& o) {
+  if (!(o.pitch > o.side) || !(o.radius > o.side) || o.steps < 4 || o.side_steps < 1)
+    throw std::invalid_argument(
+        "helical sweep: the turns would touch (pitch <= side) or the "
+        "options are degenerate");
+  const int m = o.side_steps;
+  const double half = 0.5 * o.side;
+  const double end = 2.0 * kPi * o.turns;
+  TriangleSoup soup;
+  // Rings of 4m points around the square, in the order bottom, outer, top, inner side.
+  auto square_point = [&](int index) -> std::pair<double, double> {  // (rho, zeta)
+    const int side = index / m, i = index % m;
+    const double f = o.side * i / m;
+    switch (side) {
+      case 0:
+        return {-half + f, -half};
+      case 1:
+        return {half, -half + f};
+      case 2:
+        return {half - f, half};
+      default:
+        return {-half, half - f};
+    }
+  };
+  for (int k = 0; k <= o.steps; ++k) {
+    const double t = end * k / o.steps;
+    for (int index = 0; index < 4 * m; ++index) {
+      const auto [rho, zeta] = square_point(index);
+      soup.points.push_back(helix_point(o, t, rho, zeta));
+    }
+  }
+  auto ring = [&](int k, int index) { return k * 4 * m + (index % (4 * m)); };
+  for (int k = 0; k < o.steps; ++k) {
+    const Point centre = helix_point(o, end * (k + 0.5) / o.steps, 0.0, 0.0);
+    for (int index = 0; index < 4 * m; ++index) {
+      std::array<int, 3> a{ring(k, index), ring(k, index + 1), ring(k + 1, index + 1)};
+      std::array<int, 3> b{ring(k, index), ring(k + 1, index + 1), ring(k + 1, index)};
+      orient_away_from(soup, a, centre);
+      orient_away_from(soup, b, centre);
+      soup.triangles.push_back(a);
+      soup.triangles.push_back(b);
+    }
+  }
+  // The two end caps: an (m + 1) x (m + 1) grid over the square, its border the ring's.
+  for (int cap = 0; cap < 2; ++cap) {
+    const int k = cap == 0 ? 0 : o.steps;
+    const double t = end * k / o.steps;
+    // Inside the solid, behind the cap.
+    const Point inside = helix_point(o, cap == 0 ? t + 0.01 : t - 0.01, 0.0, 0.0);
+    std::map<std::pair<int, int>, int> grid;
+    for (int index = 0; index < 4 * m; ++index) {
+      const auto [rho, zeta] = square_point(index);
+      grid[{static_cast<int>(std::lround((rho + half) / o.side * m)),
+            static_cast<int>(std::lround((zeta + half) / o.side * m))}] = ring(k, index);
+    }
+    for (int i = 1; i < m; ++i) {
+      for (int j = 1; j < m; ++j) {
+        grid[{i, j}] = static_cast<int>(soup.points.size());
+        soup.points.push_back(helix_point(o, t, -half + o.side * i / m, -half + o.side * j / m));
+      }
+    }
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < m; ++j) {
+        const int p00 = grid.at({i, j}), p10 = grid.at({i + 1, j});
+        const int p01 = grid.at({i, j + 1}), p11 = grid.at({i + 1, j + 1});
+        std::array<int, 3> a{p00, p10, p11}, b{p00, p11, p01};
+        orient_away_from(soup, a, inside);
+        orient_away_from(soup, b, inside);
+        soup.triangles.push_back(a);
+        soup.triangles.push_back(b);
+      }
+    }
+  }
+  return segmented(soup, "helical sweep generator");
+}
+
 std::vector<std::string> procedural_solid_names() {
-  return {"l_block", "stepped_block", "notched_block", "block_on_plate", "cylinder", "cone"};
+  return {"l_block",  "stepped_block", "notched_block", "block_on_plate",
+          "cylinder", "cone",          "helical_sweep"};
 }
 
 Mesh make_procedural_solid(const std::string& name) {
@@ -202,6 +298,8 @@ Mesh make_procedural_solid(const std::string& name) {
     return make_cylinder({});
   } else if (name == "cone") {
     return make_cone({});
+  } else if (name == "helical_sweep") {
+    return make_helical_sweep({});
   } else {
     throw std::invalid_argument("unknown procedural solid '" + name + "'");
   }

@@ -38,8 +38,23 @@ Mesh make_cylinder(const RevolvedSolidOptions& options);
 /// region 0 (curved, meeting at the apex).
 Mesh make_cone(const RevolvedSolidOptions& options);
 
+/// A square cross section swept along a helix (the slice paper's figure 18, "a helical
+/// surface with a square cross section"): the square, of side `side`, lies in the plane of
+/// the axis (z) and the radial direction, centred on the helix of radius `radius` that rises
+/// `pitch` per turn, for `turns` turns; closed by two planar end caps. Four curved faces
+/// (two cylinders, two helicoids) meet at convex sharp edges.
+struct HelicalSweepOptions {
+  double radius = 2.0;
+  double side = 0.6;
+  double pitch = 1.5;  ///< must exceed `side`, so that the turns do not touch
+  double turns = 1.25;
+  int steps = 400;      ///< along the helix
+  int side_steps = 12;  ///< across each side of the square (and each cap)
+};
+Mesh make_helical_sweep(const HelicalSweepOptions& options = {});
+
 /// The named procedural solids of the catalog: "l_block", "stepped_block",
-/// "notched_block", "block_on_plate", "cylinder", "cone".
+/// "notched_block", "block_on_plate", "cylinder", "cone", "helical_sweep".
 std::vector<std::string> procedural_solid_names();
 /// Throws std::invalid_argument for an unknown name.
 Mesh make_procedural_solid(const std::string& name);

@@ -11,6 +11,7 @@
 #include <map>
 #include <queue>
 #include <set>
+#include <stdexcept>
 
 namespace holebench::generators {
 
@@ -266,6 +267,44 @@ std::vector<PunchTarget> find_punch_targets(const AnalysedModel& model) {
     targets.push_back({"island", planar, 8.0 * length / model.mesh.n_edges()});
   }
   return targets;
+}
+
+}  // namespace holebench::generators
+
+namespace holebench::generators {
+
+PunchTarget find_gear_tooth_target(const AnalysedModel& model) {
+  const Mesh& mesh = model.mesh;
+  // The axis: the coordinate axis the faces' normals point along least (area-weighted), the
+  // direction of a prism's extrusion; through the bounding box's centre.
+  double normal_mass[3] = {0.0, 0.0, 0.0};
+  for (const auto f : mesh.faces()) {
+    auto v = mesh.cfv_begin(f);
+    const Point a = mesh.point(*v), b = mesh.point(*++v), c = mesh.point(*++v);
+    const Point n = OpenMesh::cross(b - a, c - a);
+    for (int k = 0; k < 3; ++k)
+      normal_mass[k] += std::abs(n[k]);
+  }
+  const int axis = static_cast<int>(std::min_element(normal_mass, normal_mass + 3) - normal_mass);
+  const BoundingBox box = bounding_box(mesh);
+  const Point centre = box.center();
+  const double length = box.max[axis] - box.min[axis];
+  PunchTarget target{"gear_tooth", VertexHandle(), 0.0};
+  double farthest = -1.0;
+  for (const auto v : mesh.vertices()) {
+    const Point p = mesh.point(v) - centre;
+    if (std::abs(p[axis]) > 0.1 * length)
+      continue;  // near the middle of the length only
+    Point radial = p;
+    radial[axis] = 0.0;
+    if (radial.norm() > farthest) {  // the first of equals, by vertex index
+      farthest = radial.norm();
+      target.vertex = v;
+    }
+  }
+  if (!target.vertex.is_valid())
+    throw std::invalid_argument("model '" + model.name + "' has no vertex near its middle");
+  return target;
 }
 
 }  // namespace holebench::generators

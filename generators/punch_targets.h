@@ -56,4 +56,12 @@ struct PunchTarget {
 /// - island: like face_interior (an annulus is removed there, its inside kept).
 std::vector<PunchTarget> find_punch_targets(const AnalysedModel& model);
 
+/// "gear_tooth", for a prismatic part with teeth around an axis (a gear; the slice paper's
+/// figure 20, on CGAL's pinion): the axis is the coordinate axis the faces' normals point
+/// along least (area-weighted: the extrusion's direction), through the bounding box's centre;
+/// the target is the vertex farthest from it within a tenth of the length from the middle, a
+/// tooth's tip. Not among find_punch_targets' (it means nothing on other parts); the catalog
+/// lists it for the gear models only. Throws std::invalid_argument on an empty model.
+PunchTarget find_gear_tooth_target(const AnalysedModel& model);
+
 }  // namespace holebench::generators

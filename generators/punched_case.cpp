@@ -219,8 +219,23 @@ std::optional<HoleLabels> planar_labels(const AnalysedModel& model, const PunchR
 struct Punch {
   PunchResult punched;
   HoleTruth truth;
-  bool cuts_through = false;  ///< several boundary loops, or a whole face of the model removed
+  /// Several boundary loops, a whole face of the model removed, or (shrink_to_target) more
+  /// features taken away than the target's kind names (takes_more_than_its_target).
+  bool cuts_through = false;
 };
+
+// A face-interior hole that takes a sharp edge or a corner away, an edge hole more than its
+// edge, a corner hole more than its corner's three edges (on a part thinner than the hole:
+// the helical sweep's square section).
+bool takes_more_than_its_target(const std::string& kind, const HoleTruth& truth) {
+  if (kind == "face_interior")
+    return !truth.missing_edges.empty() || !truth.missing_corners.empty();
+  if (kind == "edge_convex" || kind == "edge_reflex")
+    return truth.missing_edges.size() > 1 || !truth.missing_corners.empty();
+  if (kind.rfind("corner_", 0) == 0)
+    return truth.missing_edges.size() > 3 || truth.missing_corners.size() > 1;
+  return false;
+}
 
 Punch punch_at(const AnalysedModel& model, const PunchTarget& target, const Frame& frame,
                const PunchedCaseOptions& options, const IrregularRadius& outer) {
@@ -243,8 +258,9 @@ Punch punch_at(const AnalysedModel& model, const PunchTarget& target, const Fram
   LabelFailure failure = LabelFailure::None;
   truth.labels =
       planar_labels(model, punch.punched, truth, options, truth.unlabelled_because, failure);
-  punch.cuts_through =
-      failure == LabelFailure::SeveralLoops || failure == LabelFailure::FaceInsideTheHole;
+  punch.cuts_through = failure == LabelFailure::SeveralLoops ||
+                       failure == LabelFailure::FaceInsideTheHole ||
+                       (options.shrink_to_target && takes_more_than_its_target(target.kind, truth));
   return punch;
 }
 
@@ -259,8 +275,10 @@ Case make_punched_case(const AnalysedModel& model, const PunchTarget& target,
   const Frame frame = frame_at(model.mesh, target.vertex);
   Punch punch = punch_at(model, target, frame, options, outer);
   // A hole that cuts through a thin part (several loops) or takes a whole face away is
-  // outside the taxonomy: punched again, smaller, while it stays at least min_radius. The
-  // same shape (phases), only the radius changes, so the case is still one id's alone.
+  // outside the taxonomy, and with shrink_to_target one that takes more features than its
+  // target names is not that target's hole: punched again, smaller, while it stays at least
+  // min_radius. The same shape (phases), only the radius changes, so the case is still one
+  // id's alone.
   for (int step = 0; step < options.shrink_steps && punch.cuts_through; ++step) {
     const double radius = outer.radius * options.shrink_factor;
     if (radius < target.min_radius)

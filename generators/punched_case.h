@@ -23,6 +23,12 @@ struct PunchedCaseOptions {
   /// times (an island excepted).
   double shrink_factor = 0.8;
   int shrink_steps = 6;
+  /// Also punched again while it takes more features away than its target names (a
+  /// face-interior hole an edge or corner, an edge hole a second edge or a corner, a corner
+  /// hole a fourth edge or a second corner). The catalog sets it for the procedural solids,
+  /// whose parts can be thinner than a large hole (the helical sweep's square section); the
+  /// CAD models' cases are punched without it, as their baselines were.
+  bool shrink_to_target = false;
 };
 
 /// Removes the faces around `target` (an irregular disc on the surface, grown only through

@@ -17,6 +17,9 @@ struct MethodParameters {
   /// The structure size delta_s (model units) of the B-Rep paper: a hole smaller than it is
   /// small enough to close automatically. 0: the method's own default.
   double structure_size = 0.0;
+  /// Return the method's steps as geometry in MethodResult::layers (figures, `holebench run
+  /// --layers`). Off in suite runs; a method's repair must not depend on it.
+  bool record_layers = false;
 };
 
 class Method {

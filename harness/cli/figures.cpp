@@ -25,9 +25,9 @@ int figures(FiguresFlags& flags) {
     fmt::print("{}\n", path.string());
   if (!options.results) {
     fmt::print(stderr,
-               "holebench figures: only figure 5 (it needs no results); Table 2 and the "
-               "crease table need --results of the paper suite (holebench run --suite paper "
-               "--out DIR)\n");
+               "holebench figures: the pictures only; Table 2 (both forms) and the crease "
+               "table need --results of the paper suite (holebench run --suite paper --out "
+               "DIR)\n");
   } else {
     const auto data = read_results_json(*options.results);
     for (const auto& gap : paper_figure_gaps(data))
@@ -42,9 +42,23 @@ Subcommand add_figures_command(CLI::App& app) {
   auto flags = std::make_shared<FiguresFlags>();
   auto* command = app.add_subcommand(
       "figures",
-      "Regenerate the papers' figures and tables: B-Rep figure 5 (rendered), and with "
-      "--results the slice paper's Table 2 and the crest-line paper's figures 10/13 setting");
+      "Regenerate the papers' figures and tables. Rendered (methods run on the cases, "
+      "deterministic; a PNG, an SVG and a caption file each): B-Rep figure 5; slice paper "
+      "figures 2 (the method's steps), 17-20 (Table 2's models), 22 (noise), 23-24 (cone "
+      "apex); crest-line paper figures 10 and 13 (crease holes) and 12 (concave corner). With "
+      "--results of the paper suite: the slice paper's Table 2 (its four rows beside ours, and "
+      "per CAD model and target kind) and the crease table");
   command->add_option("--out", flags->options.out_dir, "Output folder")->required();
+  command
+      ->add_option("--figure", flags->options.only,
+                   "Render only these figures, repeatable: figure2, figure5, figure10, "
+                   "figure12, figure13, figure17 .. figure20, figure22, figure23 (with 24) "
+                   "(default: all; a minute or two)")
+      ->type_name("NAME");
+  command
+      ->add_option("--panel-size", flags->options.panel_size,
+                   "Pixels of each square panel (default 300)")
+      ->check(CLI::Range(32, 4096));
   command
       ->add_option("--results", flags->results,
                    "results.json of the paper suite (holebench run --suite paper)")

@@ -109,6 +109,11 @@ Subcommand add_run_command(CLI::App& app) {
   run->add_flag("--no-snapshots", flags.no_snapshots, "Do not render a PNG per job");
   run->add_flag("--no-viewer-meshes", flags.no_viewer_meshes,
                 "Do not write the report's 3D viewer meshes (meshes/) with the snapshots");
+  run->add_flag("--layers", flags.layers,
+                "Ask each method for its steps as geometry (segments, missing edges, slices, "
+                "crest lines, feature lines, sub-holes, faces, transitions, arrows) and draw "
+                "them: layers/<job>.png, one panel per step, and layers/<job>.obj. Metrics "
+                "ignore them. Meant for a single job or a few");
   run->add_option("--workers,-j", flags.workers, "Jobs at once (default: the number of cores)")
       ->check(CLI::NonNegativeNumber);
   run->add_option("--timeout", values->timeout,

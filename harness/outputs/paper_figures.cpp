@@ -1,9 +1,12 @@
 #include "harness/outputs/paper_figures.h"
 
 #include "generators/case_catalog.h"
+#include "harness/outputs/crest_paper_figures.h"
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/report/summary_table.h"
+#include "harness/outputs/slice_paper_figures.h"
+#include "harness/results/run_context.h"
 #include "methods/registry.h"
 #include "metrics/metric_names.h"
 
@@ -247,15 +250,50 @@ std::vector<std::string> paper_figure_gaps(const ResultsData& data) {
   return gaps;
 }
 
+const std::vector<std::string>& paper_figure_names() {
+  static const std::vector<std::string> names = {"figure5",  "figure2",  "figure17", "figure18",
+                                                 "figure19", "figure20", "figure22", "figure23",
+                                                 "figure10", "figure12", "figure13"};
+  return names;
+}
+
 std::vector<std::filesystem::path> write_paper_figures(const FiguresOptions& options) {
+  for (const auto& name : options.only) {
+    const auto& names = paper_figure_names();
+    if (name != "figure24" && std::find(names.begin(), names.end(), name) == names.end())
+      throw std::invalid_argument(
+          fmt::format("unknown figure '{}' (known: {}, figure24)", name, fmt::join(names, ", ")));
+  }
   std::filesystem::create_directories(options.out_dir);
-  std::vector<std::filesystem::path> written{figure_5(options)};
+  std::optional<ResultsData> data;
+  FigureProvenance provenance;
+  provenance.code_version = current_context("").code_version;
   if (options.results) {
-    const ResultsData data = read_results_json(*options.results);
-    for (const auto& p : table_2(data, options))
-      written.push_back(p);
-    for (const auto& p : crease_table(data, options))
-      written.push_back(p);
+    data = read_results_json(*options.results);
+    provenance.run = fmt::format("{} (suite {}, code {})", options.results->generic_string(),
+                                 data->context.suite, data->context.code_version);
+  }
+  const auto asked = [&](const std::string& stem) {
+    return options.only.empty() ||
+           std::find(options.only.begin(), options.only.end(), stem) != options.only.end();
+  };
+  std::vector<std::filesystem::path> written;
+  if (asked("figure5"))
+    written.push_back(figure_5(options));
+  PaperFigureOptions rendered;
+  rendered.out_dir = options.out_dir;
+  rendered.panel_size = options.panel_size;
+  rendered.samples_per_axis = options.samples_per_axis;
+  rendered.provenance = provenance;
+  rendered.only = options.only;
+  if (!options.only.empty() && asked("figure24"))
+    rendered.only.push_back("figure23");  // figures 23 and 24 are rendered together
+  append(written, write_slice_paper_figures(rendered));
+  append(written, write_crest_paper_figures(rendered));
+  if (data) {
+    append(written, table_2(*data, options));
+    append(written, write_slice_table_2_paper_rows(*data, options.out_dir));
+    append(written, crease_table(*data, options));
   }
   return written;
 }

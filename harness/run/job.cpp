@@ -5,8 +5,10 @@
 #include "core/stopwatch.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/file_names.h"
+#include "harness/outputs/layers_obj.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/image.h"
+#include "harness/outputs/render/layers_picture.h"
 #include "harness/outputs/viewer/viewer_mesh.h"
 #include "harness/run/memory_limit.h"
 #include "harness/run/oracle_user.h"
@@ -95,6 +97,7 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
     const auto start = Clock::now();
     MethodParameters parameters;
     parameters.structure_size = c.parameters.structure_size;
+    parameters.record_layers = !options.layers_dir.empty();
     seed_cgal_default_random();
     MethodResult result = method->run(c.input, parameters, *user);
     record.method_run_seconds.push_back(seconds_since(start));
@@ -143,6 +146,13 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
       record.stages.push_back({"snapshot", seconds_since(snapshot_start) +
                                                (first_of_group ? prepared.picture_seconds : 0.0)});
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
+    }
+    if (!options.layers_dir.empty()) {
+      const auto layers_start = Clock::now();
+      const std::string stem = file_stem_of_id(job.id());
+      render::write_png(render::layers_picture(c, result), options.layers_dir / (stem + ".png"));
+      write_layers_obj(result.layers, options.layers_dir / (stem + ".obj"));
+      record.stages.push_back({"layers", seconds_since(layers_start)});
     }
   } catch (const InvalidInputError& e) {
     record.status = JobStatus::InvalidInput;

@@ -84,7 +84,8 @@ struct JobRecord {
   double method_seconds = 0.0;
   /// Wall time of each run of the method (JobOptions::method_repetitions; one by default).
   std::vector<double> method_run_seconds;
-  /// Wall time of the job's stages: "case" (generation), "method", "evaluation", "snapshot".
+  /// Wall time of the job's stages: "case" (generation), "method", "evaluation", "snapshot",
+  /// "layers".
   std::vector<PhaseTiming> stages;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
 
@@ -99,6 +100,10 @@ struct JobOptions {
   /// The output folder that gets the report's 3D viewer meshes (meshes/, written with the
   /// snapshot and timed in its stage; outputs/viewer/viewer_mesh.h); empty: none.
   std::filesystem::path viewer_mesh_dir;
+  /// Where the method's steps go (`--layers`): the method is asked for its layers
+  /// (MethodParameters::record_layers) and each job writes <stem>.png (layers_picture.h) and
+  /// <stem>.obj (layers_obj.h) here, timed in its "layers" stage; empty: none asked.
+  std::filesystem::path layers_dir;
   /// Runs of the method per job, for steadier timings: the record's method time is their
   /// median; the first run's result is the one evaluated (the methods are deterministic).
   int method_repetitions = 1;

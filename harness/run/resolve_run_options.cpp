@@ -71,6 +71,7 @@ RunOptions resolve_run_options(const Suite& suite, const RunFlags& flags) {
     options.cad_data_dir = *flags.cad_data_dir;
   options.snapshots = !flags.no_snapshots;
   options.viewer_meshes = !flags.no_viewer_meshes;
+  options.layers = flags.layers;
   options.workers = flags.workers;
   options.resume = flags.resume;
   if (flags.shard)

@@ -35,6 +35,7 @@ struct RunFlags {
   bool no_cad = false;                                   ///< --no-cad
   bool no_snapshots = false;                             ///< --no-snapshots
   bool no_viewer_meshes = false;                         ///< --no-viewer-meshes
+  bool layers = false;                                   ///< --layers
   int workers = 0;                                       ///< --workers; 0: the number of cores
   std::optional<double> timeout_seconds;                 ///< --timeout
   bool resume = false;                                   ///< --resume

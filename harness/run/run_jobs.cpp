@@ -139,6 +139,10 @@ RunSummary run_jobs(const RunOptions& options) {
       job_options.viewer_mesh_dir = options.out_dir;
     std::filesystem::create_directories(job_options.snapshot_dir);
   }
+  if (options.layers) {
+    job_options.layers_dir = options.out_dir / "layers";
+    std::filesystem::create_directories(job_options.layers_dir);
+  }
   RunSummary summary;
   const JobFunction run_one = [&](const Job& job) { return run_job(job, job_options); };
   if (options.in_process) {

@@ -26,6 +26,9 @@ struct RunOptions {
   bool snapshots = true;
   /// With the snapshots, the report's 3D viewer meshes (meshes/, outputs/viewer/viewer_mesh.h).
   bool viewer_meshes = true;
+  /// Ask the methods for their steps as geometry and draw them into layers/ (`--layers`,
+  /// JobOptions::layers_dir).
+  bool layers = false;
   int workers = 0;       ///< processes at once; 0: the number of cores
   bool resume = false;   ///< keep the records already in the folder's records.jsonl
   bool progress = true;  ///< progress on stderr

@@ -14,11 +14,39 @@ namespace holebench {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+using namespace brep_guidance;
+
+// The layers of detection and guidance for one hole: the hole's runs, one polyline per face
+// f_i it crosses (Algorithm 1); its transitions T_i and, for k = 3, the planes' intersection
+// S; and its guidance arrow (equations 3-5), from P along r for distance d.
+void add_hole_layers(std::vector<MethodLayer>& layers, const Mesh& mesh, const Hole& hole,
+                     const std::optional<GuidanceArrow>& arrow, double d) {
+  MethodLayer& faces =
+      layer_named(layers, "faces", "detection (algorithm 1)", LayerKind::Polylines);
+  for (const auto& run : hole.runs) {
+    std::vector<Point> line;
+    for (const auto h : run)
+      line.push_back(mesh.point(mesh.from_vertex_handle(h)));
+    if (!run.empty())
+      line.push_back(mesh.point(mesh.to_vertex_handle(run.back())));
+    faces.polylines.push_back(std::move(line));
+  }
+  MethodLayer& transitions =
+      layer_named(layers, "transitions", "detection (algorithm 1)", LayerKind::Points);
+  for (const auto& t : hole.transitions)
+    transitions.points.push_back(t.position);
+  if (hole.S)
+    transitions.points.push_back(*hole.S);
+  MethodLayer& arrows =
+      layer_named(layers, "arrows", "guidance (equations 3-5)", LayerKind::Polylines);
+  if (arrow)
+    arrows.polylines.push_back({arrow->position, arrow->position + arrow->direction * d});
+}
+
 }  // namespace
 
 MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parameters, User& user,
                                const BrepGuidanceOptions& options) {
-  using namespace brep_guidance;
   MethodResult result;
   result.repaired = holed;
   const double diagonal = bounding_box_diagonal(holed);
@@ -100,6 +128,8 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
       }
       guide_seconds += seconds_since(start);
     }
+    if (parameters.record_layers)
+      add_hole_layers(result.layers, holed, hole, report.arrow, d);
     report.seconds = seconds_since(hole_start);
     result.holes.push_back(std::move(report));
   }

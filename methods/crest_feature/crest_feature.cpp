@@ -13,16 +13,79 @@
 namespace holebench {
 namespace {
 using Clock = std::chrono::steady_clock;
+using namespace crest_feature;
+
+// The phase names, which the layers name as their steps.
+constexpr const char* kStepCrestLines = "crest line detection (3.2)";
+constexpr const char* kStepFeaturePoints = "feature points (3.4.1)";
+constexpr const char* kStepInterpolation = "feature line interpolation (3.4.3)";
+constexpr const char* kStepPartitioning = "hole partitioning (3.4.4)";
+constexpr const char* kStepFilling = "hole filling (3.5)";
+
+// The layer of 3.2: every crest line of the input (ridges and ravines).
+void add_crest_line_layer(std::vector<MethodLayer>& layers, const CrestLines& crest) {
+  MethodLayer& layer = layer_named(layers, "crest_lines", kStepCrestLines, LayerKind::Polylines);
+  for (const auto& line : crest.lines)
+    layer.polylines.push_back(line.points);
+}
+
+// The layers of 3.4.1-3.4.4 for one hole: the feature points used (after the user's review),
+// the feature lines (eq. 3) from their feature point or corner to the other, and the
+// sub-holes' loops.
+void add_hole_layers(std::vector<MethodLayer>& layers, const Mesh& mesh, const Hole& hole,
+                     const HoleFeatures& features, const FeatureLines& lines,
+                     const HolePartition& partition) {
+  MethodLayer& points =
+      layer_named(layers, "feature_points", kStepFeaturePoints, LayerKind::Points);
+  for (const auto& p : features.points)
+    points.points.push_back(p.position);
+  MethodLayer& feature_lines =
+      layer_named(layers, "feature_lines", kStepInterpolation, LayerKind::Polylines);
+  const auto end_point = [&](int loop_index, int corner) {
+    return loop_index >= 0 ? mesh.point(hole.vertices[loop_index]) : lines.corners[corner];
+  };
+  for (const auto& line : lines.lines) {
+    std::vector<Point> polyline{end_point(line.from, line.from_corner)};
+    polyline.insert(polyline.end(), line.interior.begin(), line.interior.end());
+    polyline.push_back(end_point(line.to, line.to_corner));
+    feature_lines.polylines.push_back(std::move(polyline));
+  }
+  MethodLayer& sub_holes =
+      layer_named(layers, "sub_holes", kStepPartitioning, LayerKind::Polylines);
+  for (const auto& loop : partition.sub_holes) {
+    std::vector<Point> polyline;
+    for (const Node node : loop) {
+      polyline.push_back(node >= 0 ? mesh.point(VertexHandle(node))
+                                   : partition.new_points[new_point_index(node)]);
+    }
+    if (!polyline.empty())
+      polyline.push_back(polyline.front());  // closed
+    sub_holes.polylines.push_back(std::move(polyline));
+  }
+}
+
+// The layer of 3.5: the patch (the repair's new faces).
+void add_patch_layer(std::vector<MethodLayer>& layers, const Mesh& repaired) {
+  std::vector<FaceHandle> patch;
+  for (const auto f : repaired.faces()) {
+    if (is_new(repaired, f))
+      patch.push_back(f);
+  }
+  append_faces(layer_named(layers, "patch", kStepFilling, LayerKind::Surface), repaired, patch);
+}
+
 }  // namespace
 
-MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeatureOptions& options) {
-  using namespace crest_feature;
+MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeatureOptions& options,
+                               bool record_layers) {
   MethodResult result;
   result.repaired = holed;
 
   auto start = Clock::now();
   const CrestLines crest = detect_crest_lines(holed, options.crest_lines);
-  result.phases.push_back({"crest line detection (3.2)", seconds_since(start)});
+  result.phases.push_back({kStepCrestLines, seconds_since(start)});
+  if (record_layers)
+    add_crest_line_layer(result.layers, crest);
   if (crest.skipped)
     result.message = "crest lines skipped (degenerate principal directions): plain filling";
 
@@ -82,6 +145,8 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
       filling = fill_hole(result.repaired, partition, options.filling);
     }
     filling_seconds += seconds_since(start);
+    if (record_layers)
+      add_hole_layers(result.layers, result.repaired, hole, features, lines, partition);
 
     report.closed = filling.closed;
     report.new_faces = filling.new_faces;
@@ -138,11 +203,13 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     report.seconds = seconds_since(hole_start);
     result.holes.push_back(std::move(report));
   }
-  result.phases.push_back({"feature points (3.4.1)", feature_seconds});
+  if (record_layers)
+    add_patch_layer(result.layers, result.repaired);
+  result.phases.push_back({kStepFeaturePoints, feature_seconds});
   result.phases.push_back({"user intervention (3.4.2)", user_seconds});
-  result.phases.push_back({"feature line interpolation (3.4.3)", interpolation_seconds});
-  result.phases.push_back({"hole partitioning (3.4.4)", partition_seconds});
-  result.phases.push_back({"hole filling (3.5)", filling_seconds});
+  result.phases.push_back({kStepInterpolation, interpolation_seconds});
+  result.phases.push_back({kStepPartitioning, partition_seconds});
+  result.phases.push_back({kStepFilling, filling_seconds});
   result.status = closed == holes.size()          ? MethodStatus::Ok
                   : closed == 0 && !holes.empty() ? MethodStatus::Failed
                                                   : MethodStatus::Partial;

@@ -25,9 +25,12 @@ struct CrestFeatureOptions {
   crest_feature::HoleFillingOptions filling;  ///< refinement and fairing off by default
 };
 
-/// Runs the method on `holed`; the user step of every hole goes through `user`.
+/// Runs the method on `holed`; the user step of every hole goes through `user`. With
+/// `record_layers`, the result's layers show each step: the crest lines (3.2), the feature
+/// points used (3.4.1-3.4.2), the feature lines (3.4.3), the sub-holes (3.4.4) and the patch
+/// (3.5).
 MethodResult run_crest_feature(const Mesh& holed, User& user,
-                               const CrestFeatureOptions& options = {});
+                               const CrestFeatureOptions& options = {}, bool record_layers = false);
 
 class CrestFeatureMethod final : public Method {
  public:
@@ -38,8 +41,9 @@ class CrestFeatureMethod final : public Method {
            "feature lines, sub-holes filled by projected constrained Delaunay triangulation";
   }
   MethodOptions options() const override;
-  MethodResult run(const Mesh& holed, const MethodParameters&, User& user) const override {
-    return run_crest_feature(holed, user, options_);
+  MethodResult run(const Mesh& holed, const MethodParameters& parameters,
+                   User& user) const override {
+    return run_crest_feature(holed, user, options_, parameters.record_layers);
   }
 
  private:

@@ -36,11 +36,94 @@ struct PhaseClock {
   double identification = 0, segmentation = 0, features = 0, surface = 0, sewing = 0;
 };
 
+// The phase names, which the layers name as their steps.
+constexpr const char* kStepIdentification = "I holes and islands (4.1)";
+constexpr const char* kStepSegmentation = "II segmentation of the hole boundary (4.2)";
+constexpr const char* kStepFeatures = "III missing features (4.3, eqs. 1-3)";
+constexpr const char* kStepSurface = "IV composite surface (4.4)";
+constexpr const char* kStepSewing = "V-VI trimming, faceting and sewing (4.5-4.6)";
+
+// Layers of step II: each segment of the hole boundary as a polyline.
+void add_segment_layer(std::vector<MethodLayer>& layers, const Mesh& holed, const Hole& hole) {
+  MethodLayer& layer = layer_named(layers, "segments", kStepSegmentation, LayerKind::Polylines);
+  for (const auto& segment : hole.segments) {
+    std::vector<Point> line;
+    for (const auto v : segment.vertices)
+      line.push_back(holed.point(v));
+    layer.polylines.push_back(std::move(line));
+  }
+}
+
+// Layers of step III: the missing edges as traced (eqs. 1-3) and the missing corner.
+void add_feature_layers(std::vector<MethodLayer>& layers, const MissingFeatures& features) {
+  // (Each layer is filled before the next is looked up: adding one may move the others.)
+  MethodLayer& edges = layer_named(layers, "missing_edges", kStepFeatures, LayerKind::Polylines);
+  for (const auto& edge : features.edges)
+    edges.polylines.push_back(edge.trace);
+  MethodLayer& corner = layer_named(layers, "missing_corner", kStepFeatures, LayerKind::Points);
+  if (features.corner >= 0)
+    corner.points.push_back(features.points[features.corner]);
+}
+
+// The lofted surface S(u, s) over its sections' offsets and its common arc-length grid, as
+// triangles (two per grid cell).
+void add_surface_samples(MethodLayer& layer, const LoftedSurface& surface) {
+  const auto& us = surface.section_u();
+  const auto& ss = surface.s_grid();
+  if (us.size() < 2 || ss.size() < 2)
+    return;
+  const int base = static_cast<int>(layer.surface.points.size());
+  for (double u : us) {
+    for (double s : ss)
+      layer.surface.points.push_back(surface.evaluate(u, s));
+  }
+  const int columns = static_cast<int>(ss.size());
+  for (int k = 0; k + 1 < static_cast<int>(us.size()); ++k) {
+    for (int j = 0; j + 1 < columns; ++j) {
+      const int a = base + k * columns + j, b = a + 1, c = a + columns, d = c + 1;
+      layer.surface.triangles.push_back({a, b, d});
+      layer.surface.triangles.push_back({a, d, c});
+    }
+  }
+}
+
+// Layers of step IV: the slices (each section of the mesh with its traced gaps), the section
+// curves traced across the hole, and the lofted surface.
+void add_surface_layers(std::vector<MethodLayer>& layers, const std::vector<LoftedPatch>& patches) {
+  // (Each layer is filled before the next is looked up: adding one may move the others.)
+  MethodLayer& slices = layer_named(layers, "slices", kStepSurface, LayerKind::Polylines);
+  for (const auto& patch : patches) {
+    for (const auto& section : patch.sections)
+      slices.polylines.push_back(section.points);
+  }
+  MethodLayer& traced = layer_named(layers, "section_curves", kStepSurface, LayerKind::Points);
+  for (const auto& patch : patches) {
+    for (const auto& section : patch.sections)
+      traced.points.insert(traced.points.end(), section.traced.begin(), section.traced.end());
+  }
+  MethodLayer& lofted = layer_named(layers, "lofted_surface", kStepSurface, LayerKind::Surface);
+  for (const auto& patch : patches) {
+    if (patch.ok)
+      add_surface_samples(lofted, patch.surface);
+  }
+}
+
+// The layer of steps V-VI: the trimmed, faceted patch (the repair's new faces).
+void add_patch_layer(std::vector<MethodLayer>& layers, const Mesh& repaired) {
+  std::vector<FaceHandle> patch;
+  for (const auto f : repaired.faces()) {
+    if (is_new(repaired, f))
+      patch.push_back(f);
+  }
+  append_faces(layer_named(layers, "trimmed_patch", kStepSewing, LayerKind::Surface), repaired,
+               patch);
+}
+
 // Steps IV-VI for one decomposition of a hole. Empty string on success.
 std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, const Hole& hole,
                  const MissingFeatures& features, const std::vector<int>& face_region,
                  const SliceLoftOptions& options, PhaseClock& clock, SewingResult& sewn,
-                 bool use_regions, std::string& remark) {
+                 bool use_regions, std::string& remark, std::vector<MethodLayer>* layers) {
   auto start = Clock::now();
   std::vector<Portion> portions = hole_portions(holed, found.contours, hole, features, face_region);
   // The hole's and islands' boundary, and the missing-feature points that lie on it.
@@ -64,10 +147,14 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
   for (const auto& portion : portions) {
     patches.push_back(loft_portion(holed, hole, portion, face_region, options.surface));
     if (!patches.back().ok) {
+      if (layers)
+        add_surface_layers(*layers, patches);
       clock.surface += seconds_since(start);
       return "composite surface: " + patches.back().error;
     }
   }
+  if (layers)
+    add_surface_layers(*layers, patches);
   clock.surface += seconds_since(start);
   start = Clock::now();
   // Each portion trimmed on its own patch, split where its boundary is pinched.
@@ -122,7 +209,8 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
 
 }  // namespace
 
-MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) {
+MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options,
+                            bool record_layers) {
   MethodResult result;
   result.repaired = holed;
   PhaseClock clock;
@@ -148,6 +236,8 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
     start = Clock::now();
     segment_hole_boundary(holed, face_region, hole, options.segmentation);
     clock.segmentation += seconds_since(start);
+    if (record_layers)
+      add_segment_layer(result.layers, holed, hole);
     note << to_string(hole.type) << " hole, " << hole.segments.size() << " segment(s), "
          << hole.islands.size() << " island(s)";
     if (hole.orphan_island)
@@ -161,6 +251,8 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
       features = reconstruct_missing_features(holed, hole, feature_options);
     }
     clock.features += seconds_since(start);
+    if (record_layers)
+      add_feature_layers(result.layers, features);
     if (!features.edges.empty()) {
       note << "; " << (features.through_edge ? 1 : features.edges.size()) << " missing edge(s)"
            << (features.corner >= 0 ? " and a missing corner" : "")
@@ -176,21 +268,25 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
 
     SewingResult sewn;
     std::string remark;
+    // The step IV layers of the attempt that made the patch (or of the last one tried).
+    std::vector<MethodLayer> attempt;
     std::string error = fill(result.repaired, holed, found, hole, features, face_region, options,
-                             clock, sewn, true, remark);
+                             clock, sewn, true, remark, record_layers ? &attempt : nullptr);
     if (!error.empty()) {
       // Fall back: the whole hole as one portion, slicing every influencing triangle.
       report.fallback = kOnePortionWithoutFeatures;
       note << "; " << error << "; filled as one portion without features";
       const MissingFeatures none;
       remark.clear();
+      attempt.clear();
       error = fill(result.repaired, holed, found, hole, none, face_region, options, clock, sewn,
-                   false, remark);
+                   false, remark, record_layers ? &attempt : nullptr);
       if (!error.empty())
         note << "; failed again: " << error;
     }
     if (error.empty() && !remark.empty())
       note << "; " << remark;
+    append_layers(result.layers, std::move(attempt));
     report.closed = error.empty();
     report.new_faces = sewn.new_faces;
     report.new_vertices = sewn.new_vertices;
@@ -200,12 +296,14 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options) 
     result.holes.push_back(std::move(report));
   }
 
+  if (record_layers)
+    add_patch_layer(result.layers, result.repaired);
   result.phases = {
-      {"I holes and islands (4.1)", clock.identification},
-      {"II segmentation of the hole boundary (4.2)", clock.segmentation},
-      {"III missing features (4.3, eqs. 1-3)", clock.features},
-      {"IV composite surface (4.4)", clock.surface},
-      {"V-VI trimming, faceting and sewing (4.5-4.6)", clock.sewing},
+      {kStepIdentification, clock.identification},
+      {kStepSegmentation, clock.segmentation},
+      {kStepFeatures, clock.features},
+      {kStepSurface, clock.surface},
+      {kStepSewing, clock.sewing},
   };
   const std::size_t n = found.holes.size();
   result.status = closed == n   ? MethodStatus::Ok

@@ -31,7 +31,11 @@ struct SliceLoftOptions {
 /// missing features is filled as one portion without them; one that cannot be filled at
 /// all is left open; each hole's report says which (status Partial / Failed). Never throws
 /// for a geometric failure.
-MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options = {});
+/// With `record_layers`, the result's layers show each step: the boundary's segments (II), the
+/// missing edges and corner (III), the slices, section curves and lofted surface (IV) and
+/// the trimmed patch (V-VI).
+MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options = {},
+                            bool record_layers = false);
 
 /// The slice paper's method (`slice_loft`), or with `tessellation.direct` its comparison in
 /// Table 2's right column, "direct tessellation of the discrete points generated from the
@@ -55,8 +59,8 @@ class SliceLoftMethod final : public Method {
                  "curvature continuity, slice sections lofted, trimmed and faceted";
   }
   MethodOptions options() const override;
-  MethodResult run(const Mesh& holed, const MethodParameters&, User&) const override {
-    return run_slice_loft(holed, options_);
+  MethodResult run(const Mesh& holed, const MethodParameters& parameters, User&) const override {
+    return run_slice_loft(holed, options_, parameters.record_layers);
   }
 
  private:

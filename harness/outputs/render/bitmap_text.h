@@ -1,6 +1,8 @@
-// Short labels drawn into images with a built-in 5x7 pixel font: digits, '.', '-', '+',
-// 'e', '%' and space (other characters are skipped as spaces), for the numbers of a colour
-// bar; no font file is needed.
+// Short labels drawn into images with a built-in 5x7 pixel font: digits, capital letters,
+// '.', '-', '+', '%', '_', '/', '(', ')', ',', ':' and space (other characters are skipped as
+// spaces), for the numbers of a colour bar and the captions of panels; no font file is
+// needed. Small letters are drawn as capitals, except 'e', which keeps a small glyph for the
+// exponents of numbers: write captions in capitals.
 #pragma once
 
 #include "harness/outputs/render/image.h"
