@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <numeric>
 #include <string>
 
@@ -46,6 +47,33 @@ TEST(Job, MethodRepetitionsGiveTheMedianTimeAndTheSameResult) {
   const JobRecord back = record_from_json(nlohmann::json::parse(record_to_json(repeated).dump()));
   EXPECT_EQ(back.method_run_seconds, repeated.method_run_seconds);
   EXPECT_EQ(back.method_seconds, repeated.method_seconds);
+}
+
+// --layers: the job draws the method's layers (a PNG and an OBJ named after the job) and its
+// record is the same as without them, timings aside.
+TEST(Job, LayersAreDrawnAndChangeNoMetric) {
+  const Job job{"box/corner", "slice_loft", 0.0, 0, "no_user"};
+  const JobRecord plain = run_job(job, JobOptions{});
+  ASSERT_EQ(plain.status, JobStatus::Ok) << plain.message;
+  JobOptions layered;
+  layered.layers_dir = std::filesystem::temp_directory_path() / "holebench_job_layers";
+  std::filesystem::remove_all(layered.layers_dir);
+  std::filesystem::create_directories(layered.layers_dir);
+  const JobRecord drawn = run_job(job, layered);
+  ASSERT_EQ(drawn.status, JobStatus::Ok) << drawn.message;
+  const std::string stem = "box_corner_slice_loft_no_user_0_0";
+  EXPECT_GT(std::filesystem::file_size(layered.layers_dir / (stem + ".png")), 1000u);
+  EXPECT_GT(std::filesystem::file_size(layered.layers_dir / (stem + ".obj")), 1000u);
+  EXPECT_GE(stage(drawn, "layers"), 0.0);
+  ASSERT_EQ(drawn.metrics.size(), plain.metrics.size());
+  for (std::size_t i = 0; i < plain.metrics.size(); ++i) {
+    if (plain.metrics[i].name == "time_method_s")
+      continue;
+    EXPECT_EQ(drawn.metrics[i].name, plain.metrics[i].name);
+    EXPECT_EQ(drawn.metrics[i].value, plain.metrics[i].value) << plain.metrics[i].name;
+  }
+  ASSERT_EQ(drawn.holes.size(), plain.holes.size());
+  EXPECT_EQ(drawn.holes[0].note, plain.holes[0].note);
 }
 
 }  // namespace
