@@ -221,7 +221,8 @@ std::string value_or_status(const JobRecord* r, const char* metric, double scale
 
 std::vector<std::filesystem::path> write_slice_table_2_paper_rows(
     const ResultsData& data, const std::filesystem::path& out_dir) {
-  const std::vector<std::string> baselines = {"liepa_cgal", "cgal_triangulate", "occt_fill"};
+  const std::vector<std::string> baselines = {"liepa_cgal", "cgal_triangulate", "occt_fill",
+                                              "meshlab_close_holes"};
   std::string md =
       "| paper | model (holebench case) | input tri. paper / ours | new tri. paper / ours "
       "(slice_loft) | slice_loft error x1e-3 paper / ours | slice_direct error x1e-3 paper / "

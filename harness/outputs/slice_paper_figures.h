@@ -38,8 +38,8 @@ std::vector<std::filesystem::path> write_slice_paper_figures(const PaperFigureOp
 /// model, the paper's input and new triangles and its two errors; ours: input and new
 /// triangles (slice_loft), the mean new-vertex error of slice_loft and slice_direct in model
 /// units x 1e3 (the paper's) and relative to the diagonal, and the baselines' (liepa_cgal,
-/// cgal_triangulate, occt_fill) relative errors. A method without a record (or without new
-/// vertices) shows "-" and its status.
+/// cgal_triangulate, occt_fill, meshlab_close_holes) relative errors. A method without a record (or
+/// without new vertices) shows "-" and its status.
 std::vector<std::filesystem::path> write_slice_table_2_paper_rows(
     const ResultsData& data, const std::filesystem::path& out_dir);
 
