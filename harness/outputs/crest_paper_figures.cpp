@@ -132,10 +132,12 @@ std::vector<std::filesystem::path> figure_12(const PaperFigureOptions& options) 
   view.regions_coloured = true;
   const MethodResult crest = run_method_for_figure("crest_feature", c, "no_user", true);
   std::vector<FigurePanel> panels = {
-      {mesh_panel(c.input, view, overlay_of(crest, {"crest_lines"})), "(A) INPUT"},
+      {mesh_panel(c.input, view, overlay_of(crest, {"crest_lines"})), "(a) input"},
       crest_panel(options, c, "no_user", false),
       crest_panel(options, c, "oracle", false),
       crest_panel(options, c, "oracle", true)};
+  for (std::size_t i = 1; i < panels.size(); ++i)  // the caption's letters
+    panels[i].label = fmt::format("({}) {}", static_cast<char>('a' + i), panels[i].label);
   auto lines = case_lines({crest_concave_corner_case()});
   lines.insert(lines.begin(),
                "(a) the input with its crest lines; (b) crest_feature with no user and (c) with "
