@@ -105,10 +105,12 @@ std::vector<std::filesystem::path> figure_22(const PaperFigureOptions& options) 
   std::vector<std::string> lines = {
       "(a) 5 % noise, (b) 25 % noise (of 1 % of the diagonal): "
       "slice_loft's patch in red"};
+  // One camera for both panels: the clean case's view of the hole.
+  const render::Camera camera = hole_camera(generators::make_case(id), 0, 1.3);
   for (double noise : {5.0, 25.0}) {
     const Case c = generators::make_case(id, 0, noise);
     const MethodResult result = run_method_for_figure("slice_loft", c);
-    panels.push_back({mesh_panel(result.repaired, panel_view(options, hole_camera(c, 0, 1.3))),
+    panels.push_back({mesh_panel(result.repaired, panel_view(options, camera)),
                       fmt::format("({}) NOISE {} %", panels.empty() ? 'A' : 'B', noise)});
     lines.push_back(case_line(c));
   }
