@@ -53,7 +53,7 @@ Subcommand add_figures_command(CLI::App& app) {
       ->add_option("--figure", flags->options.only,
                    "Render only these figures, repeatable: figure2, figure5, figure10, "
                    "figure12, figure13, figure17 .. figure20, figure22, figure23 (with 24) "
-                   "(default: all; a minute or two)")
+                   "(default: all, about 10 s)")
       ->type_name("NAME");
   command
       ->add_option("--panel-size", flags->options.panel_size,
