@@ -56,8 +56,10 @@ void append_layers(std::vector<MethodLayer>& into, std::vector<MethodLayer> from
   }
 }
 
-void append_faces(MethodLayer& layer, const Mesh& mesh, const std::vector<FaceHandle>& faces) {
-  for (const FaceHandle f : faces) {
+void append_new_faces(MethodLayer& layer, const Mesh& mesh) {
+  for (const FaceHandle f : mesh.faces()) {
+    if (!is_new(mesh, f))
+      continue;
     std::array<int, 3> triangle{};
     int corner = 0;
     for (const auto v : mesh.fv_range(f)) {

@@ -41,7 +41,8 @@ MethodLayer& layer_named(std::vector<MethodLayer>& layers, const std::string& na
 /// if absent): the layers of one hole added to those of the holes before it.
 void append_layers(std::vector<MethodLayer>& into, std::vector<MethodLayer> from);
 
-/// Appends `triangles` of `mesh` (faces by handle) to a surface layer, its points copied.
-void append_faces(MethodLayer& layer, const Mesh& mesh, const std::vector<FaceHandle>& faces);
+/// Appends the new faces of `mesh` (the patch: Provenance::New) to a surface layer, their
+/// points copied.
+void append_new_faces(MethodLayer& layer, const Mesh& mesh);
 
 }  // namespace holebench

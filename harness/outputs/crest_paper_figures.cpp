@@ -34,18 +34,6 @@ PanelView panel_view(const PaperFigureOptions& options, const Case& c) {
   return view;
 }
 
-// The layers of `result` named in `names`, drawn in the layer palette's colours.
-render::Overlay overlay_of(const MethodResult& result, const std::vector<std::string>& names) {
-  render::Overlay overlay;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    for (const auto& layer : result.layers) {
-      if (layer.name == names[i])
-        render::add_layer(overlay, layer, render::layer_colour(i));
-    }
-  }
-  return overlay;
-}
-
 std::string status_suffix(const MethodResult& result) {
   return result.status == MethodStatus::Ok ? std::string()
                                            : std::string(" ") + to_string(result.status);
@@ -58,7 +46,8 @@ std::vector<FigurePanel> figure_10_row(const PaperFigureOptions& options, const 
   view.regions_coloured = true;
   const MethodResult crest = run_method_for_figure("crest_feature", c, "no_user", true);
   std::vector<FigurePanel> row = {
-      {mesh_panel(c.input, view, overlay_of(crest, {"crest_lines"})), "input, crest lines"}};
+      {mesh_panel(c.input, view, render::layers_overlay(crest, {"crest_lines"})),
+       "input, crest lines"}};
   view.regions_coloured = false;
   for (const char* method : {"cgal_triangulate", "liepa_cgal"}) {
     const MethodResult result = run_method_for_figure(method, c);
@@ -74,7 +63,8 @@ FigurePanel crest_panel(const PaperFigureOptions& options, const Case& c, const 
   view.patch_colour = flat ? render::kept_colour() : kGreen;
   const MethodResult result = run_method_for_figure("crest_feature", c, user, true);
   const render::Overlay overlay =
-      flat ? render::Overlay{} : overlay_of(result, {"feature_lines", "feature_points"});
+      flat ? render::Overlay{}
+           : render::layers_overlay(result, {"feature_lines", "feature_points"});
   return {mesh_panel(result.repaired, view, overlay),
           fmt::format("{}{}{}", user == "no_user" ? "no user" : user, flat ? ", flat" : "",
                       status_suffix(result))};
@@ -132,7 +122,7 @@ std::vector<std::filesystem::path> figure_12(const PaperFigureOptions& options) 
   view.regions_coloured = true;
   const MethodResult crest = run_method_for_figure("crest_feature", c, "no_user", true);
   std::vector<FigurePanel> panels = {
-      {mesh_panel(c.input, view, overlay_of(crest, {"crest_lines"})), "(a) input"},
+      {mesh_panel(c.input, view, render::layers_overlay(crest, {"crest_lines"})), "(a) input"},
       crest_panel(options, c, "no_user", false),
       crest_panel(options, c, "oracle", false),
       crest_panel(options, c, "oracle", true)};

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/split_text.h"
+#include "harness/outputs/file_bytes.h"
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/bitmap_text.h"
 #include "harness/outputs/render/close_up.h"
@@ -10,9 +11,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
-#include <fstream>
-#include <sstream>
 
 namespace holebench::harness {
 
@@ -30,9 +28,7 @@ render::Image figure_sheet(const std::vector<FigurePanel>& panels, int columns, 
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const int x = static_cast<int>(i) % columns * (cell_width + gap);
     const int y = static_cast<int>(i) / columns * (cell_height + gap);
-    std::string label = panels[i].label;
-    std::transform(label.begin(), label.end(), label.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+    const std::string label = render::capitals(panels[i].label);
     render::TextOptions text;
     if (render::text_width(label, text) > cell_width - 8)
       text.scale = 1;
@@ -62,48 +58,6 @@ void append(std::vector<std::filesystem::path>& files, std::vector<std::filesyst
     files.push_back(std::move(f));
 }
 
-std::string base64(const std::string& bytes) {
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned n = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    out += alphabet[(n >> 18) & 63];
-    out += alphabet[(n >> 12) & 63];
-    out += alphabet[(n >> 6) & 63];
-    out += alphabet[n & 63];
-  }
-  const std::size_t rest = bytes.size() - i;
-  if (rest == 1) {
-    const unsigned n = static_cast<unsigned char>(bytes[i]) << 16;
-    out += alphabet[(n >> 18) & 63];
-    out += alphabet[(n >> 12) & 63];
-    out += "==";
-  } else if (rest == 2) {
-    const unsigned n = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8);
-    out += alphabet[(n >> 18) & 63];
-    out += alphabet[(n >> 12) & 63];
-    out += alphabet[(n >> 6) & 63];
-    out += '=';
-  }
-  return out;
-}
-
-namespace {
-
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
-}  // namespace
-
 std::vector<std::filesystem::path> write_figure(const render::Image& sheet,
                                                 const std::string& caption,
                                                 const std::filesystem::path& stem) {
@@ -119,7 +73,7 @@ std::vector<std::filesystem::path> write_figure(const render::Image& sheet,
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
       "viewBox=\"0 0 {0} {1}\">\n<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
       "<image width=\"{0}\" height=\"{2}\" href=\"data:image/png;base64,{3}\"/>\n",
-      sheet.width, height, sheet.height, base64(file_bytes(png)));
+      sheet.width, height, sheet.height, base64(read_bytes(png)));
   for (std::size_t i = 0; i < lines.size(); ++i) {
     text += fmt::format(
         "<text x=\"4\" y=\"{}\" font-family=\"sans-serif\" font-size=\"12\">{}</text>\n",
@@ -167,12 +121,7 @@ render::Camera tilted(const render::Camera& camera, double degrees) {
 }
 
 render::Camera hole_camera(const Case& c, std::size_t hole, double zoom_out) {
-  render::Camera camera;
-  if (hole < c.holes.size()) {
-    camera = render::hole_view(c, hole).camera;
-  } else {
-    camera = render::whole_model_camera(c, Point(-1, -1, -1));
-  }
+  render::Camera camera = render::hole_or_whole_camera(c, hole);
   camera.distance *= zoom_out;
   return camera;
 }

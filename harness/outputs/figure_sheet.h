@@ -42,7 +42,7 @@ struct PanelView {
 render::Image mesh_panel(const Mesh& mesh, const PanelView& view,
                          const render::Overlay& overlay = {});
 
-/// The close-up camera of hole `hole` of `c` (render::hole_view), its distance scaled by
+/// render::hole_or_whole_camera(c, hole), its distance scaled by
 /// `zoom_out` (> 1 shows more around the hole).
 render::Camera hole_camera(const Case& c, std::size_t hole = 0, double zoom_out = 1.0);
 
@@ -78,8 +78,5 @@ bool wanted(const PaperFigureOptions& options, const std::string& stem);
 
 /// Appends `more` to `files`.
 void append(std::vector<std::filesystem::path>& files, std::vector<std::filesystem::path> more);
-
-/// Base64 of `bytes` (RFC 4648, with padding), for the SVG's embedded PNG.
-std::string base64(const std::string& bytes);
 
 }  // namespace holebench::harness

@@ -273,21 +273,15 @@ std::vector<std::filesystem::path> write_paper_figures(const FiguresOptions& opt
     provenance.run = fmt::format("{} (suite {}, code {})", options.results->generic_string(),
                                  data->context.suite, data->context.code_version);
   }
-  const auto asked = [&](const std::string& stem) {
-    return options.only.empty() ||
-           std::find(options.only.begin(), options.only.end(), stem) != options.only.end();
-  };
-  std::vector<std::filesystem::path> written;
-  if (asked("figure5"))
-    written.push_back(figure_5(options));
   PaperFigureOptions rendered;
   rendered.out_dir = options.out_dir;
   rendered.panel_size = options.panel_size;
   rendered.samples_per_axis = options.samples_per_axis;
   rendered.provenance = provenance;
-  rendered.only = options.only;
-  if (!options.only.empty() && asked("figure24"))
-    rendered.only.push_back("figure23");  // figures 23 and 24 are rendered together
+  rendered.only = options.only;  // figure24 asks for figure 23 too: they are rendered together
+  std::vector<std::filesystem::path> written;
+  if (wanted(rendered, "figure5"))
+    written.push_back(figure_5(options));
   append(written, write_slice_paper_figures(rendered));
   append(written, write_crest_paper_figures(rendered));
   if (data) {

@@ -121,14 +121,6 @@ std::vector<std::filesystem::path> figure_22(const PaperFigureOptions& options) 
       options.out_dir / "figure22_slice_noise");
 }
 
-const MethodLayer* layer_of(const MethodResult& result, const std::string& name) {
-  for (const auto& layer : result.layers) {
-    if (layer.name == name)
-      return &layer;
-  }
-  return nullptr;
-}
-
 // Figures 23 and 24: the cone with its apex missing: (23a) the input, (23b) its top view,
 // (23c) the slices around the apex; (24a) the recovered apex (the lofted surface and the
 // section curves), (24b) the final output.
@@ -139,21 +131,14 @@ std::vector<std::filesystem::path> figures_23_24(const PaperFigureOptions& optio
   // obliquely, so that the cone's shape shows.
   const render::Camera top = hole_camera(c, 0, 2.5);
   const render::Camera close = tilted(hole_camera(c, 0, 2.0), 55.0);
-  auto with_layers = [&](const std::vector<std::string>& names) {
-    render::Overlay overlay;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (const MethodLayer* layer = layer_of(result, names[i]))
-        render::add_layer(overlay, *layer, render::layer_colour(i));
-    }
-    return overlay;
-  };
   PanelView view = panel_view(options, close);
   view.regions_coloured = true;
   std::vector<FigurePanel> panels23 = {{mesh_panel(c.input, view), "(A) INPUT"}};
   view.camera = top;
   panels23.push_back({mesh_panel(c.input, view), "(B) TOP VIEW"});
   view.camera = close;
-  panels23.push_back({mesh_panel(c.input, view, with_layers({"slices"})), "(C) SLICES"});
+  panels23.push_back(
+      {mesh_panel(c.input, view, render::layers_overlay(result, {"slices"})), "(C) SLICES"});
   const std::vector<std::string> lines = {case_line(c), "method: slice_loft (no_user), layers"};
   auto files = write_figure(
       figure_sheet(panels23, 3),
@@ -165,7 +150,8 @@ std::vector<std::filesystem::path> figures_23_24(const PaperFigureOptions& optio
       options.out_dir / "figure23_slice_cone_apex");
   view.regions_coloured = false;
   std::vector<FigurePanel> panels24 = {
-      {mesh_panel(c.input, view, with_layers({"section_curves", "lofted_surface"})),
+      {mesh_panel(c.input, view,
+                  render::layers_overlay(result, {"section_curves", "lofted_surface"})),
        "(A) RECOVERED APEX"},
       {mesh_panel(result.repaired, view), "(B) FINAL OUTPUT"}};
   for (auto& f :

@@ -66,12 +66,7 @@ void add_hole_layers(std::vector<MethodLayer>& layers, const Mesh& mesh, const H
 
 // The layer of 3.5: the patch (the repair's new faces).
 void add_patch_layer(std::vector<MethodLayer>& layers, const Mesh& repaired) {
-  std::vector<FaceHandle> patch;
-  for (const auto f : repaired.faces()) {
-    if (is_new(repaired, f))
-      patch.push_back(f);
-  }
-  append_faces(layer_named(layers, "patch", kStepFilling, LayerKind::Surface), repaired, patch);
+  append_new_faces(layer_named(layers, "patch", kStepFilling, LayerKind::Surface), repaired);
 }
 
 }  // namespace

@@ -110,13 +110,7 @@ void add_surface_layers(std::vector<MethodLayer>& layers, const std::vector<Loft
 
 // The layer of steps V-VI: the trimmed, faceted patch (the repair's new faces).
 void add_patch_layer(std::vector<MethodLayer>& layers, const Mesh& repaired) {
-  std::vector<FaceHandle> patch;
-  for (const auto f : repaired.faces()) {
-    if (is_new(repaired, f))
-      patch.push_back(f);
-  }
-  append_faces(layer_named(layers, "trimmed_patch", kStepSewing, LayerKind::Surface), repaired,
-               patch);
+  append_new_faces(layer_named(layers, "trimmed_patch", kStepSewing, LayerKind::Surface), repaired);
 }
 
 // Steps IV-VI for one decomposition of a hole. Empty string on success.

@@ -1,6 +1,8 @@
 #include "harness/outputs/render/bitmap_text.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdint>
 
 namespace holebench::render {
@@ -100,6 +102,12 @@ const Glyph* glyph(char c) {
 }
 
 }  // namespace
+
+std::string capitals(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+  return text;
+}
 
 int text_width(const std::string& text, const TextOptions& options) {
   return static_cast<int>(text.size()) * kAdvance * options.scale;

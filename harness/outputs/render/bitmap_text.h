@@ -19,6 +19,9 @@ struct TextOptions {
 /// The width in pixels of `text` (6 font pixels per character, times the scale).
 int text_width(const std::string& text, const TextOptions& options = {});
 
+/// `text` in capitals, as captions are written (a small 'e' would draw as the exponent's).
+std::string capitals(std::string text);
+
 /// Draws `text` with its top-left corner at (x, y); pixels outside the image are skipped.
 void draw_text(Image& image, int x, int y, const std::string& text,
                const TextOptions& options = {});

@@ -177,6 +177,11 @@ Camera whole_model_camera(const Case& c, const Point& direction) {
   return frame_sphere(box.center(), 0.5 * box.diagonal(), direction, kFieldOfViewDegrees);
 }
 
+Camera hole_or_whole_camera(const Case& c, std::size_t hole) {
+  return hole < c.holes.size() ? hole_view(c, hole).camera
+                               : whole_model_camera(c, Point(-1, -1, -1));
+}
+
 CasePicture::CasePicture(const Case& c, const CloseUpOptions& options)
     : complete_scene_(std::make_unique<embree::TriangleScene>(c.complete)),
       scale_(case_heat_scale(c)) {

@@ -45,6 +45,10 @@ HoleView hole_view(const Case& c, std::size_t hole, const CloseUpOptions& option
 /// The whole model seen along `direction`, framed on its bounding sphere.
 Camera whole_model_camera(const Case& c, const Point& direction);
 
+/// The camera of hole_view(c, hole), or the whole model seen along (-1, -1, -1) where the
+/// case has no such hole.
+Camera hole_or_whole_camera(const Case& c, std::size_t hole = 0);
+
 /// What the pictures of one case's jobs share, whatever the method: the complete model's
 /// Embree scene (the patch's distances), the case's heat scale and the close-up views of its
 /// first holes. Built once per case instance for a group of jobs (harness/run/job.h).

@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 
 namespace holebench::render {
 
@@ -46,24 +45,22 @@ void add_layer(Overlay& overlay, const MethodLayer& layer, const Rgb& colour) {
   }
 }
 
+Overlay layers_overlay(const MethodResult& result, const std::vector<std::string>& names) {
+  Overlay overlay;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    for (const auto& layer : result.layers) {
+      if (layer.name == names[i])
+        add_layer(overlay, layer, layer_colour(i));
+    }
+  }
+  return overlay;
+}
+
 std::string layer_caption(const MethodLayer& layer) {
-  std::string name = layer.name;
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
-  return fmt::format("{} ({})", name, layer.size());
+  return fmt::format("{} ({})", capitals(layer.name), layer.size());
 }
 
 namespace {
-
-Camera panel_camera(const Case& c, const LayersPictureOptions& options) {
-  if (options.camera)
-    return *options.camera;
-  CloseUpOptions close_up;
-  close_up.view_size = options.view_size;
-  if (!c.holes.empty())
-    return hole_view(c, 0, close_up).camera;
-  return whole_model_camera(c, Point(-1, -1, -1));
-}
 
 Image captioned(const Image& view, const std::string& caption, int caption_height) {
   Image panel(view.width, view.height + caption_height);
@@ -82,7 +79,7 @@ Image captioned(const Image& view, const std::string& caption, int caption_heigh
 
 Image layers_picture(const Case& c, const MethodResult& result,
                      const LayersPictureOptions& options) {
-  const Camera camera = panel_camera(c, options);
+  const Camera camera = options.camera ? *options.camera : hole_or_whole_camera(c);
   SnapshotOptions snapshot;
   snapshot.width = snapshot.height = options.view_size;
   snapshot.samples_per_axis = options.samples_per_axis;

@@ -21,13 +21,17 @@ Rgb layer_colour(std::size_t index);
 /// consecutive points, a surface as a solid (shaded, it hides and is hidden by the mesh).
 void add_layer(Overlay& overlay, const MethodLayer& layer, const Rgb& colour);
 
+/// The layers of `result` named in `names`, each in layer_colour(its index in `names`);
+/// names without a layer are skipped.
+Overlay layers_overlay(const MethodResult& result, const std::vector<std::string>& names);
+
 struct LayersPictureOptions {
   int view_size = 320;  ///< each panel is square, in pixels
   int samples_per_axis = 2;
   int columns = 4;
   int caption_height = 22;  ///< the strip above each panel with its caption
-  /// The view of every panel; unset: the first hole's close-up view (close_up.h's hole_view,
-  /// chosen from the ground truth, as pictures may), or the whole model without holes.
+  /// The view of every panel; unset: hole_or_whole_camera(c) (close_up.h: the first hole's
+  /// close-up, chosen from the ground truth, as pictures may).
   std::optional<Camera> camera;
 };
 

@@ -1,5 +1,6 @@
 #include "harness/outputs/viewer/viewer_page.h"
 
+#include "harness/outputs/file_bytes.h"
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/heat_map.h"
@@ -19,12 +20,8 @@
 namespace holebench::viewer {
 namespace {
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::runtime_error(path.string() + ": cannot read");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using harness::base64;
+using harness::read_bytes;
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
@@ -32,24 +29,6 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   out << text;
   if (!out)
     throw std::runtime_error(path.string() + ": cannot write");
-}
-
-std::string base64(const std::string& bytes) {
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t chunk = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-      chunk <<= 8;
-      if (k < n)
-        chunk |= static_cast<unsigned char>(bytes[i + k]);
-    }
-    for (std::size_t k = 0; k < 4; ++k)
-      out += k <= n ? alphabet[(chunk >> (18 - 6 * k)) & 0x3F] : '=';
-  }
-  return out;
 }
 
 /// One case of the viewer: its meshes by the name the tick boxes show.

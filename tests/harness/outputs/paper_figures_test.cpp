@@ -2,7 +2,7 @@
 
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
-#include "harness/outputs/figure_sheet.h"
+#include "harness/outputs/file_bytes.h"
 #include "harness/outputs/slice_paper_figures.h"
 #include "harness/results/results_file.h"
 
