@@ -51,9 +51,16 @@ class DirectedSearch {
                         for (std::size_t i = range.begin(); i != range.end(); ++i)
                           bounds[i] = bound_of(initial[i], settled_now);
                       });
-    // Queued all at once, in face order.
+    // Queued all at once, in face order; the settled ones only leave their bound.
     for (std::size_t i = 0; i < initial.size(); ++i)
       prepare(initial[i], bounds[i]);
+    const auto settled_cell = [this](const TriangleCell& cell) {
+      if (cell.priority > settled())
+        return false;
+      settled_upper_ = std::max(settled_upper_, cell.priority);
+      return true;
+    };
+    initial.erase(std::remove_if(initial.begin(), initial.end(), settled_cell), initial.end());
     queue_.start(std::move(initial));
     // Split the cell with the largest upper bound until none is above the largest distance
     // found plus the error bound.
@@ -66,7 +73,8 @@ class DirectedSearch {
         [this](const TriangleCell& cell) { split(cell); });
     if (!bound_met)
       result_.converged = false;
-    result_.upper = std::max(result_.lower, queue_.empty() ? 0.0 : queue_.top().priority);
+    result_.upper =
+        std::max({result_.lower, settled_upper_, queue_.empty() ? 0.0 : queue_.top().priority});
     return result_;
   }
 
@@ -214,8 +222,16 @@ class DirectedSearch {
     cell.priority = bound.upper;
   }
 
+  // A cell whose upper bound is settled will never be split (the largest distance found
+  // only grows): only its bound is kept, for the answer's upper end. The queue holds the
+  // cells that may still be split, which pop in the same order as among all cells (their
+  // order is total), and so the search makes the same cells and the same answer.
   void push(TriangleCell cell) {
     prepare(cell, bound_of(cell, settled()));
+    if (cell.priority <= settled()) {
+      settled_upper_ = std::max(settled_upper_, cell.priority);
+      return;
+    }
     queue_.push(std::move(cell));
   }
 
@@ -230,6 +246,7 @@ class DirectedSearch {
   const HausdorffOptions& options_;
   DirectedHausdorff result_;
   CellQueue<TriangleCell> queue_;  // priority: the cell's upper bound
+  double settled_upper_ = 0.0;     // the largest upper bound of the cells left out as settled
 };
 
 }  // namespace

@@ -49,22 +49,38 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
       return i >= 0 && static_cast<std::size_t>(i) < common && same_vertex[i];
     });
   };
+  // Most repairs keep the input's faces at their indices: a repaired face is looked up at its
+  // own index first, and in a table of the input's faces only when it is not there. The two
+  // agree: the input has one face per triple (a mesh has one face per oriented corner), so
+  // the table would name the same face.
   std::unordered_map<IndexTriple, int, IndexTripleHash> input_face_of;
-  input_face_of.reserve(input.n_faces());
-  for (auto f : input.faces()) {
-    const IndexTriple t = index_triple(input, f);
-    if (on_same_vertices(t))
-      input_face_of.emplace(t, f.idx());
-  }
+  bool table_built = false;
+  const auto input_face_with = [&](const IndexTriple& t, int index) {
+    if (static_cast<std::size_t>(index) < input.n_faces() &&
+        !input.status(input.face_handle(index)).deleted() &&
+        index_triple(input, input.face_handle(index)) == t && on_same_vertices(t))
+      return index;
+    if (!table_built) {
+      input_face_of.reserve(input.n_faces());
+      for (auto f : input.faces()) {
+        const IndexTriple triple = index_triple(input, f);
+        if (on_same_vertices(triple))
+          input_face_of.emplace(triple, f.idx());
+      }
+      table_built = true;
+    }
+    const auto it = input_face_of.find(t);
+    return it == input_face_of.end() ? -1 : it->second;
+  };
   int last_input_face = -1;
   for (auto f : repaired.faces()) {
-    const auto it = input_face_of.find(index_triple(repaired, f));
-    if (it == input_face_of.end() || kept.repaired_face_of_input[it->second] >= 0)
+    const int g = input_face_with(index_triple(repaired, f), f.idx());
+    if (g < 0 || kept.repaired_face_of_input[g] >= 0)
       continue;
-    kept.repaired_face_of_input[it->second] = f.idx();
-    kept.input_face_of_repaired[f.idx()] = it->second;
-    kept.order_kept = kept.order_kept && it->second > last_input_face;
-    last_input_face = it->second;
+    kept.repaired_face_of_input[g] = f.idx();
+    kept.input_face_of_repaired[f.idx()] = g;
+    kept.order_kept = kept.order_kept && g > last_input_face;
+    last_input_face = g;
   }
   return kept;
 }

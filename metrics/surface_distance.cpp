@@ -69,6 +69,31 @@ double triangle_triangle_distance(const std::array<Point, 3>& a, const std::arra
   return best;
 }
 
+// A triangle's axis-aligned box: the distance between two boxes is at most the distance
+// between their triangles.
+struct TriangleBox {
+  Point low, high;
+  explicit TriangleBox(const std::array<Point, 3>& t) : low(t[0]), high(t[0]) {
+    for (int i = 1; i < 3; ++i) {
+      low.minimize(t[i]);
+      high.maximize(t[i]);
+    }
+  }
+  double distance_to(const TriangleBox& other) const {
+    double squared = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double gap = std::max({0.0, other.low[k] - high[k], low[k] - other.high[k]});
+      squared += gap * gap;
+    }
+    return std::sqrt(squared);
+  }
+  /// The largest absolute coordinate: the scale of the rounding of distances near the box.
+  double magnitude() const {
+    return std::max({std::abs(low[0]), std::abs(low[1]), std::abs(low[2]), std::abs(high[0]),
+                     std::abs(high[1]), std::abs(high[2])});
+  }
+};
+
 // For a unit direction n, the affine l(x) = n.x - max over T's corners of n.v is at most
 // dist(x, T): T lies in the half-space n.y <= max n.v.
 struct HalfSpaceBound {
@@ -507,9 +532,19 @@ class MeanSearch {
       if (reach)
         reach->add_ball(centroid, sampled + centroid_radius);
       if (near) {
+        // A triangle whose box is farther from the cell's box than the minimum so far (with
+        // a margin far above rounding) cannot lower it: skipped, the minimum is the same.
+        const TriangleBox cell_box(c);
+        const double margin = 1e-9 * cell_box.magnitude();
         double minimum = sampled;
-        for (int face : *near)
-          minimum = std::min(minimum, triangle_triangle_distance(c, scene_.triangle_of_face(face)));
+        for (int face : *near) {
+          if (minimum == 0.0)
+            break;
+          const auto& t = scene_.triangle_of_face(face);
+          if (cell_box.distance_to(TriangleBox(t)) > minimum + margin)
+            continue;
+          minimum = std::min(minimum, triangle_triangle_distance(c, t));
+        }
         lo = std::max(lo, minimum);
       }
     }
