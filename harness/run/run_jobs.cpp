@@ -2,6 +2,7 @@
 
 #include "core/stopwatch.h"
 #include "generators/case_catalog.h"
+#include "harness/outputs/render/image.h"
 #include "harness/results/results_file.h"
 #include "harness/run/case_selection.h"
 #include "harness/run/oracle_user.h"
@@ -138,6 +139,7 @@ RunSummary run_jobs(const RunOptions& options) {
     if (options.viewer_meshes)
       job_options.viewer_mesh_dir = options.out_dir;
     std::filesystem::create_directories(job_options.snapshot_dir);
+    render::load_png_writer();  // once here, not in every job's process
   }
   if (options.layers) {
     job_options.layers_dir = options.out_dir / "layers";

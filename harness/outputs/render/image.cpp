@@ -5,19 +5,58 @@
 #include <OpenImageIO/oiioversion.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
 namespace holebench::render {
 
 namespace {
-std::uint8_t to_byte(float linear) {
-  // sRGB-like gamma so that shading reads naturally.
+
+// sRGB-like gamma so that shading reads naturally: the definition of a pixel's byte.
+std::uint8_t gamma_byte(float linear) {
   const float v = std::pow(std::clamp(linear, 0.0f, 1.0f), 1.0f / 2.2f);
   return static_cast<std::uint8_t>(std::lround(v * 255.0f));
 }
+
+// For each byte k = 1..255, the smallest float in [0, 1] whose gamma_byte is k or more
+// (gamma_byte is non-decreasing there, checked for every float in [0, 1]), by bisection on
+// the floats' bit patterns, which are ordered as the floats for non-negative values.
+std::array<float, 255> byte_thresholds() {
+  std::array<float, 255> thresholds{};
+  const auto float_of = [](std::uint32_t bits) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+  };
+  const float one = 1.0f;
+  std::uint32_t one_bits;
+  std::memcpy(&one_bits, &one, sizeof one);
+  for (int k = 1; k <= 255; ++k) {
+    std::uint32_t low = 0, high = one_bits;  // gamma_byte(high) = 255 >= k
+    while (low < high) {
+      const std::uint32_t middle = low + (high - low) / 2;
+      if (gamma_byte(float_of(middle)) >= k)
+        high = middle;
+      else
+        low = middle + 1;
+    }
+    thresholds[k - 1] = float_of(low);
+  }
+  return thresholds;
+}
+
 }  // namespace
+
+std::uint8_t to_byte(float linear) {
+  if (!(linear >= 0.0f && linear <= 1.0f))
+    return gamma_byte(linear);  // clamped (or not a number): as defined
+  static const std::array<float, 255> thresholds = byte_thresholds();
+  return static_cast<std::uint8_t>(std::upper_bound(thresholds.begin(), thresholds.end(), linear) -
+                                   thresholds.begin());
+}
 
 void Image::set(int x, int y, const Rgb& colour) {
   const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
@@ -40,10 +79,9 @@ void paste(Image& sheet, const Image& tile, int x0, int y0) {
 }
 
 void fill(Image& image, const Rgb& colour) {
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x)
-      image.set(x, y, colour);
-  }
+  const std::uint8_t bytes[3] = {to_byte(colour.r), to_byte(colour.g), to_byte(colour.b)};
+  for (std::size_t i = 0; i + 2 < image.pixels.size(); i += 3)
+    std::memcpy(&image.pixels[i], bytes, 3);
 }
 
 Image read_image(const std::filesystem::path& path) {
@@ -74,6 +112,11 @@ void write_png(const Image& image, const std::filesystem::path& path) {
       !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) || !out->close()) {
     throw std::runtime_error("cannot write " + path.string() + ": " + out->geterror());
   }
+}
+
+void load_png_writer() {
+  // Creating a writer catalogues OpenImageIO's plugins (once per process).
+  OIIO::ImageOutput::create("png");
 }
 
 const char* openimageio_version() {

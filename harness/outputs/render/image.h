@@ -20,6 +20,10 @@ struct Image {
   void set(int x, int y, const Rgb& colour);
 };
 
+/// A linear value's byte: round(255 x clamp(linear, 0, 1)^(1 / 2.2)), an sRGB-like gamma so
+/// that shading reads naturally (found among the bytes' thresholds: no power per pixel).
+std::uint8_t to_byte(float linear);
+
 /// Copies `tile` into `sheet` with its top-left corner at (x0, y0); what falls outside the
 /// sheet is cut off.
 void paste(Image& sheet, const Image& tile, int x0, int y0);
@@ -33,6 +37,10 @@ Image read_image(const std::filesystem::path& path);
 
 /// Writes `image` as PNG. Throws std::runtime_error with OpenImageIO's message on failure.
 void write_png(const Image& image, const std::filesystem::path& path);
+
+/// Loads what writing a PNG needs once (OpenImageIO's catalogue of its plugins), so that the
+/// processes forked afterwards find it loaded instead of each loading it again.
+void load_png_writer();
 
 /// OpenImageIO's version string, for the results' context block.
 const char* openimageio_version();
