@@ -17,6 +17,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -270,6 +271,11 @@ struct MeanCellBounds::Table {
   double error_bound = 0.0;
   double relative_error_bound = 0.0;
   std::unordered_map<CellKey, CellBounds, CellKeyHash> cells;
+  // The first pass over A0's vertices: each vertex's point and answer, and whether the
+  // answer came from a query (not from lying on a face shared with B0).
+  std::vector<Point> vertex_points;
+  VertexDistances vertices;
+  std::vector<char> vertex_queried;
   // Whether a search with `options` bounds a cell as these were bounded.
   bool serves(const MeanDistanceOptions& options) const {
     return options.error_bound == error_bound &&
@@ -764,7 +770,18 @@ MeanCellBounds::MeanCellBounds(const Mesh& a0, const Mesh& b0,
   // The cells as surface_distance's search makes them: the same first pass over the
   // vertices, the faces lying on B0 left out (the search skips them).
   const SharedFaces shared = shared_faces(a0, b0);
-  const VertexDistances vertices = vertex_distances(a0, b0_scene, &shared.b_face_of_a);
+  table_->vertices = vertex_distances(a0, b0_scene, &shared.b_face_of_a);
+  const VertexDistances& vertices = table_->vertices;
+  table_->vertex_queried.assign(a0.n_vertices(), 1);
+  for (auto f : a0.faces()) {
+    if (shared.b_face_of_a[f.idx()] >= 0) {
+      for (auto v : a0.fv_range(f))
+        table_->vertex_queried[v.idx()] = 0;
+    }
+  }
+  table_->vertex_points.reserve(a0.n_vertices());
+  for (auto v : a0.vertices())
+    table_->vertex_points.push_back(a0.point(v));
   std::vector<Cell> cells;
   cells.reserve(a0.n_faces());
   for (auto f : a0.faces()) {
@@ -826,6 +843,55 @@ DistanceSummary max_of(const DistanceSummary& a, const DistanceSummary& b) {
   return {larger(a.mean, b.mean), larger(a.rms, b.rms), larger(a.hausdorff, b.hausdorff)};
 }
 
+namespace {
+
+// The first pass's answers that `first` holds for its A0's vertices (MeanCellBounds), for
+// the vertices of A: a vertex of A at the index of an A0 vertex, with its point bit for
+// bit, that A0's pass queried has A0's answer against B0. That is its answer against B too
+// where B's and B0's faces within the answer's distance are the same triangles in the same
+// order (SurfaceChange): the ball about the point (padded far above rounding) misses the
+// changed box, and the nearest face of B0 is a face of B.
+EarlierVertexAnswer earlier_vertex_answers(const Mesh& a, const FirstBounds* first) {
+  if (!first || !first->bounds)
+    return {};
+  const MeanCellBounds::Table& table = first->bounds->table();
+  auto b_face_of_b0 = std::make_shared<std::vector<int>>();
+  if (const std::vector<int>* b0_face_of_b = first->change.b0_face_of_b) {
+    for (std::size_t face = 0; face < b0_face_of_b->size(); ++face) {
+      const int face0 = (*b0_face_of_b)[face];
+      if (face0 < 0)
+        continue;
+      if (static_cast<std::size_t>(face0) >= b_face_of_b0->size())
+        b_face_of_b0->resize(face0 + 1, -1);
+      (*b_face_of_b0)[face0] = static_cast<int>(face);
+    }
+  }
+  const bool b_is_b0 = first->change.b0_face_of_b == nullptr;
+  const GrowingBox changed = first->change.changed;
+  return [&a, &table, b_face_of_b0, b_is_b0, changed](int vertex, double& distance, int& face) {
+    const std::size_t i = static_cast<std::size_t>(vertex);
+    if (i >= table.vertex_points.size() || !table.vertex_queried[i] ||
+        a.point(VertexHandle(vertex)) != table.vertex_points[i])
+      return false;
+    const double d = table.vertices.distance[i];
+    int answer = table.vertices.nearest_face[i];
+    if (!b_is_b0) {
+      const Point& p = table.vertex_points[i];
+      GrowingBox ball;
+      ball.add_ball(p, d + 1e-9 * (d + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2])));
+      if (answer < 0 || static_cast<std::size_t>(answer) >= b_face_of_b0->size() ||
+          (*b_face_of_b0)[answer] < 0 || ball.meets(changed))
+        return false;
+      answer = (*b_face_of_b0)[answer];
+    }
+    distance = d;
+    face = answer;
+    return true;
+  };
+}
+
+}  // namespace
+
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
                                  const SurfaceDistanceOptions& options,
@@ -834,8 +900,10 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
   // One first pass per direction, shared by the Hausdorff and the mean searches; faces the
   // two meshes share exactly are skipped by both.
   const SharedFaces shared = shared_faces(a, b);
-  const VertexDistances a_vertices = vertex_distances(a, b_scene, &shared.b_face_of_a);
-  const VertexDistances b_vertices = vertex_distances(b, a_scene, &shared.a_face_of_b);
+  const VertexDistances a_vertices =
+      vertex_distances(a, b_scene, &shared.b_face_of_a, earlier_vertex_answers(a, a_first_bounds));
+  const VertexDistances b_vertices =
+      vertex_distances(b, a_scene, &shared.a_face_of_b, earlier_vertex_answers(b, b_first_bounds));
   const KnownDistances a_known{&a_vertices, &shared.b_face_of_a};
   const KnownDistances b_known{&b_vertices, &shared.a_face_of_b};
   SurfaceDistance result;

@@ -12,7 +12,8 @@
 namespace holebench {
 
 VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_scene,
-                                 const std::vector<int>* b_face_of_a) {
+                                 const std::vector<int>* b_face_of_a,
+                                 const EarlierVertexAnswer& earlier) {
   constexpr double kUnknown = -1.0;
   VertexDistances result;
   result.distance.assign(a.n_vertices(), kUnknown);
@@ -42,6 +43,8 @@ VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_s
       std::size_t count = 0;
       for (std::size_t i = first; i < last; ++i) {
         if (known[i] != kUnknown)
+          continue;
+        if (earlier && earlier(static_cast<int>(i), result.distance[i], result.nearest_face[i]))
           continue;
         const auto v = a.vertex_handle(static_cast<int>(i));
         double bound = std::numeric_limits<double>::infinity();

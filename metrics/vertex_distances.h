@@ -11,6 +11,7 @@
 #include "core/mesh.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace holebench {
@@ -25,9 +26,17 @@ struct VertexDistances {
   std::size_t queries = 0;
 };
 
+/// A closest-point answer found before for vertex `vertex` of A against B (by a search of
+/// the same point against the same triangles near it): true with its distance and face, or
+/// false. Called from several threads at once.
+using EarlierVertexAnswer = std::function<bool(int vertex, double& distance, int& face)>;
+
 /// `b_face_of_a` (optional): by face of A, the face of B it coincides with, or -1.
+/// `earlier` (optional): answers taken instead of querying (the same answers, since a query's
+/// answer depends only on the point and the triangles near it).
 VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_scene,
-                                 const std::vector<int>* b_face_of_a = nullptr);
+                                 const std::vector<int>* b_face_of_a = nullptr,
+                                 const EarlierVertexAnswer& earlier = {});
 
 /// What is already known about A against B, to skip the searches' first pass; both parts
 /// optional.
