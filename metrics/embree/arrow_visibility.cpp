@@ -50,6 +50,35 @@ double fraction_in_cone(const SampleView& view, const SurfaceSamples& missing,
   return total > 0.0 ? seen / total : 0.0;
 }
 
+// The samples seen from P (SampleView's candidates), in sample order: their unit vectors
+// from P and their weights. fraction_in_cone over them adds the same weights in the same
+// order as over every sample, without walking the unseen ones for each direction.
+struct SeenSamples {
+  std::vector<Point> from_camera;
+  std::vector<double> weights;
+};
+
+SeenSamples seen_samples(const SampleView& view, const SurfaceSamples& missing) {
+  SeenSamples seen;
+  for (std::size_t i = 0; i < view.candidate.size(); ++i) {
+    if (view.candidate[i]) {
+      seen.from_camera.push_back(view.from_camera[i]);
+      seen.weights.push_back(missing.weights[i]);
+    }
+  }
+  return seen;
+}
+
+double fraction_in_cone(const SeenSamples& seen, const Point& direction, double cos_half_angle,
+                        double total) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < seen.weights.size(); ++i) {
+    if (OpenMesh::dot(seen.from_camera[i], direction) >= cos_half_angle)
+      sum += seen.weights[i];
+  }
+  return total > 0.0 ? sum / total : 0.0;
+}
+
 double total_weight(const SurfaceSamples& missing) {
   double total = 0.0;
   for (double w : missing.weights)
@@ -182,7 +211,8 @@ ArrowQuality arrow_quality(const GuidanceArrow& arrow, const SurfaceSamples& mis
   const SampleView view = view_from(p, missing, holed_scene, tolerance);
   const double cos_half = std::cos(0.5 * options.field_of_view_degrees * kPi / 180.0);
   const double total = total_weight(missing);
-  quality.visible_fraction = fraction_in_cone(view, missing, r, cos_half, total);
+  const SeenSamples seen = seen_samples(view, missing);
+  quality.visible_fraction = fraction_in_cone(seen, r, cos_half, total);
 
   // Candidates: r first, then a Fibonacci sphere.
   std::vector<Point> candidates = {r};
@@ -197,7 +227,7 @@ ArrowQuality arrow_quality(const GuidanceArrow& arrow, const SurfaceSamples& mis
   fractions.reserve(candidates.size());
   double best = 0.0;
   for (const Point& u : candidates) {
-    fractions.push_back(fraction_in_cone(view, missing, u, cos_half, total));
+    fractions.push_back(fraction_in_cone(seen, u, cos_half, total));
     best = std::max(best, fractions.back());
   }
   quality.best_visible_fraction = best;
