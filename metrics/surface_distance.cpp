@@ -52,14 +52,21 @@ bool segment_meets_triangle(const Point& p, const Point& q, const std::array<Poi
   return param >= 0.0 && param <= 1.0;
 }
 
-// The distance between two triangles: 0 if they meet, else the smallest of the
-// vertex-triangle and edge-edge distances.
-double triangle_triangle_distance(const std::array<Point, 3>& a, const std::array<Point, 3>& b) {
+// Whether an edge of either triangle meets the other (then they meet).
+bool edges_meet_triangles(const std::array<Point, 3>& a, const std::array<Point, 3>& b) {
   for (int i = 0; i < 3; ++i) {
     if (segment_meets_triangle(a[i], a[(i + 1) % 3], b) ||
         segment_meets_triangle(b[i], b[(i + 1) % 3], a))
-      return 0.0;
+      return true;
   }
+  return false;
+}
+
+// The distance between two triangles: 0 if they meet, else the smallest of the
+// vertex-triangle and edge-edge distances.
+double triangle_triangle_distance(const std::array<Point, 3>& a, const std::array<Point, 3>& b) {
+  if (edges_meet_triangles(a, b))
+    return 0.0;
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
     best = std::min(best, (closest_point_on_triangle(a[i], b[0], b[1], b[2]) - a[i]).norm());
@@ -539,7 +546,10 @@ class MeanSearch {
         reach->add_ball(centroid, sampled + centroid_radius);
       if (near) {
         // A triangle whose box is farther from the cell's box than the minimum so far (with
-        // a margin far above rounding) cannot lower it: skipped, the minimum is the same.
+        // a margin far above rounding) is farther than it: only the test that makes
+        // triangle_triangle_distance answer 0 is run (it can, for nearly parallel edges,
+        // where rounding makes an edge meet a triangle it misses), and the distances
+        // are not computed. The minimum is the same number.
         const TriangleBox cell_box(c);
         const double margin = 1e-9 * cell_box.magnitude();
         double minimum = sampled;
@@ -547,8 +557,11 @@ class MeanSearch {
           if (minimum == 0.0)
             break;
           const auto& t = scene_.triangle_of_face(face);
-          if (cell_box.distance_to(TriangleBox(t)) > minimum + margin)
+          if (cell_box.distance_to(TriangleBox(t)) > minimum + margin) {
+            if (edges_meet_triangles(c, t))
+              minimum = 0.0;
             continue;
+          }
           minimum = std::min(minimum, triangle_triangle_distance(c, t));
         }
         lo = std::max(lo, minimum);
