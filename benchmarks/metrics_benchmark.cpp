@@ -163,6 +163,28 @@ void BM_Hausdorff_Cgal(benchmark::State& state) {
 }
 BENCHMARK(BM_Hausdorff_Cgal)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+#if defined(HOLEBENCH_CGAL_PARALLEL_HAUSDORFF)
+// CGAL's parallel bounded-error Hausdorff distance (Parallel_tag: TBB over a METIS partition
+// of the first mesh, in CGAL 5.5 an experimental path enabled by USE_PARALLEL_BEHD, see
+// benchmarks/CMakeLists.txt), on two threads, beside ours on two threads (BM_Hausdorff_Ours).
+void BM_Hausdorff_CgalParallelTwoThreads(benchmark::State& state) {
+  const tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
+  const Pair& p = pair(pair_name(state.range(0)));
+  state.SetLabel(pair_name(state.range(0)));
+  double value = 0.0;
+  for (auto _ : state) {
+    value = CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<
+        CGAL::Parallel_tag>(p.a, p.b, 1e-4 * p.diagonal);
+    benchmark::DoNotOptimize(value);
+  }
+  state.counters["hausdorff_rel_diag"] = value / p.diagonal;
+}
+BENCHMARK(BM_Hausdorff_CgalParallelTwoThreads)
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+#endif
+
 // Mean and RMS distance (error bound 1e-3 of the diagonal), both directions, alone and
 // as the evaluation computes them with the Hausdorff distance (scenes built outside).
 void BM_MeanDistance_Ours(benchmark::State& state) {

@@ -19,6 +19,8 @@ packages=(
   libfmt-dev nlohmann-json3-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev
+  # METIS: CGAL's parallel Hausdorff distance, the benchmarks' two-thread reference
+  libmetis-dev
   # MeshLab: the cross-check of the distance metrics (tests/metrics/meshlab_hausdorff_test.cpp)
   # and the external method meshlab_close_holes (methods/external/), run under xvfb-run
   meshlab xvfb xauth
