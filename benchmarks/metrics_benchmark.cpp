@@ -150,16 +150,23 @@ void BM_EmbreeScenesFastBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_EmbreeScenesFastBuild)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
-void BM_Hausdorff_Cgal(benchmark::State& state) {
+// CGAL's bounded-error Hausdorff distance with the given concurrency tag.
+template <class ConcurrencyTag>
+void hausdorff_cgal(benchmark::State& state) {
   const Pair& p = pair(pair_name(state.range(0)));
   state.SetLabel(pair_name(state.range(0)));
   double value = 0.0;
   for (auto _ : state) {
-    value = CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<
-        CGAL::Sequential_tag>(p.a, p.b, 1e-4 * p.diagonal);
+    value =
+        CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<ConcurrencyTag>(
+            p.a, p.b, 1e-4 * p.diagonal);
     benchmark::DoNotOptimize(value);
   }
   state.counters["hausdorff_rel_diag"] = value / p.diagonal;
+}
+
+void BM_Hausdorff_Cgal(benchmark::State& state) {
+  hausdorff_cgal<CGAL::Sequential_tag>(state);
 }
 BENCHMARK(BM_Hausdorff_Cgal)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
 
@@ -169,15 +176,7 @@ BENCHMARK(BM_Hausdorff_Cgal)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->I
 // benchmarks/CMakeLists.txt), on two threads, beside ours on two threads (BM_Hausdorff_Ours).
 void BM_Hausdorff_CgalParallelTwoThreads(benchmark::State& state) {
   const tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
-  const Pair& p = pair(pair_name(state.range(0)));
-  state.SetLabel(pair_name(state.range(0)));
-  double value = 0.0;
-  for (auto _ : state) {
-    value = CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<
-        CGAL::Parallel_tag>(p.a, p.b, 1e-4 * p.diagonal);
-    benchmark::DoNotOptimize(value);
-  }
-  state.counters["hausdorff_rel_diag"] = value / p.diagonal;
+  hausdorff_cgal<CGAL::Parallel_tag>(state);
 }
 BENCHMARK(BM_Hausdorff_CgalParallelTwoThreads)
     ->DenseRange(0, 2)

@@ -5,6 +5,8 @@
 
 #include "core/mesh.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace holebench {
@@ -23,6 +25,21 @@ struct GrowingBox {
   void add_ball(const Point& center, double radius) {
     add(center - Point(radius, radius, radius));
     add(center + Point(radius, radius, radius));
+  }
+  /// The distance between the boxes (0 where they meet): at most the distance between any
+  /// point of one and any point of the other.
+  double distance_to(const GrowingBox& other) const {
+    double squared = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double gap = std::max({0.0, other.lo[i] - hi[i], lo[i] - other.hi[i]});
+      squared += gap * gap;
+    }
+    return std::sqrt(squared);
+  }
+  /// The largest absolute coordinate of the box: the scale of rounding near it.
+  double magnitude() const {
+    return std::max({std::abs(lo[0]), std::abs(lo[1]), std::abs(lo[2]), std::abs(hi[0]),
+                     std::abs(hi[1]), std::abs(hi[2])});
   }
   /// Whether the boxes share a point (touching counts).
   bool meets(const GrowingBox& other) const {

@@ -77,30 +77,12 @@ double triangle_triangle_distance(const std::array<Point, 3>& a, const std::arra
   return best;
 }
 
-// A triangle's axis-aligned box: the distance between two boxes is at most the distance
-// between their triangles.
-struct TriangleBox {
-  Point low, high;
-  explicit TriangleBox(const std::array<Point, 3>& t) : low(t[0]), high(t[0]) {
-    for (int i = 1; i < 3; ++i) {
-      low.minimize(t[i]);
-      high.maximize(t[i]);
-    }
-  }
-  double distance_to(const TriangleBox& other) const {
-    double squared = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const double gap = std::max({0.0, other.low[k] - high[k], low[k] - other.high[k]});
-      squared += gap * gap;
-    }
-    return std::sqrt(squared);
-  }
-  /// The largest absolute coordinate: the scale of the rounding of distances near the box.
-  double magnitude() const {
-    return std::max({std::abs(low[0]), std::abs(low[1]), std::abs(low[2]), std::abs(high[0]),
-                     std::abs(high[1]), std::abs(high[2])});
-  }
-};
+GrowingBox box_of(const std::array<Point, 3>& t) {
+  GrowingBox box;
+  for (const Point& p : t)
+    box.add(p);
+  return box;
+}
 
 // For a unit direction n, the affine l(x) = n.x - max over T's corners of n.v is at most
 // dist(x, T): T lies in the half-space n.y <= max n.v.
@@ -550,14 +532,14 @@ class MeanSearch {
         // triangle_triangle_distance answer 0 is run (it can, for nearly parallel edges,
         // where rounding makes an edge meet a triangle it misses), and the distances
         // are not computed. The minimum is the same number.
-        const TriangleBox cell_box(c);
+        const GrowingBox cell_box = box_of(c);
         const double margin = 1e-9 * cell_box.magnitude();
         double minimum = sampled;
         for (int face : *near) {
           if (minimum == 0.0)
             break;
           const auto& t = scene_.triangle_of_face(face);
-          if (cell_box.distance_to(TriangleBox(t)) > minimum + margin) {
+          if (cell_box.distance_to(box_of(t)) > minimum + margin) {
             if (edges_meet_triangles(c, t))
               minimum = 0.0;
             continue;
@@ -867,19 +849,11 @@ namespace {
 EarlierVertexAnswer earlier_vertex_answers(const Mesh& a, const FirstBounds* first) {
   if (!first || !first->bounds)
     return {};
-  const MeanCellBounds::Table& table = first->bounds->table();
-  auto b_face_of_b0 = std::make_shared<std::vector<int>>();
-  if (const std::vector<int>* b0_face_of_b = first->change.b0_face_of_b) {
-    for (std::size_t face = 0; face < b0_face_of_b->size(); ++face) {
-      const int face0 = (*b0_face_of_b)[face];
-      if (face0 < 0)
-        continue;
-      if (static_cast<std::size_t>(face0) >= b_face_of_b0->size())
-        b_face_of_b0->resize(face0 + 1, -1);
-      (*b_face_of_b0)[face0] = static_cast<int>(face);
-    }
-  }
   const bool b_is_b0 = first->change.b0_face_of_b == nullptr;
+  const std::vector<int>* b_face_of_b0 = first->change.b_face_of_b0;
+  if (!b_is_b0 && !b_face_of_b0)
+    return {};
+  const MeanCellBounds::Table& table = first->bounds->table();
   const GrowingBox changed = first->change.changed;
   return [&a, &table, b_face_of_b0, b_is_b0, changed](int vertex, double& distance, int& face) {
     const std::size_t i = static_cast<std::size_t>(vertex);

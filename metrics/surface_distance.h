@@ -91,6 +91,9 @@ struct SurfaceChange {
   /// both must be in the same order (a later face of B0 is a later face of B), so that ties
   /// between equally near faces, broken by the smaller index, break the same way.
   const std::vector<int>* b0_face_of_b = nullptr;
+  /// The other way: by face of B0, the face of B with the same triangle, or -1 (set with
+  /// b0_face_of_b; without it, answers against B0 are not taken for B).
+  const std::vector<int>* b_face_of_b0 = nullptr;
   /// A box holding every face of B that B0 does not have and every face of B0 that B does
   /// not have.
   GrowingBox changed;
