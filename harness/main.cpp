@@ -1,6 +1,7 @@
 // holebench: the command line of the benchmark. Each subcommand is a file in harness/cli/;
 // main() adds them and dispatches.
 #include "harness/cli/subcommands.h"
+#include "harness/run/huge_page_heap.h"
 #include "harness/run/output_folder_lock.h"
 
 #include <CLI/CLI.hpp>
@@ -9,10 +10,15 @@
 #include <malloc.h>
 
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <vector>
 
 int main(int argc, char** argv) {
+  // A run's job processes allocate all their memory anew: in huge pages where the system
+  // gives them (harness/run/huge_page_heap.h). Only `run` forks jobs.
+  if (argc > 1 && std::strcmp(argv[1], "run") == 0)
+    holebench::harness::restart_with_huge_page_heap(argv);
   // OpenMesh writes "complex edge" and similar to stderr when a method tries a face that
   // would be non-manifold; methods report such failures in their records instead.
   omerr().disable();
