@@ -48,6 +48,14 @@ Point face_centroid(const Mesh& mesh, FaceHandle f) {
   return sum / 3.0;
 }
 
+std::array<Point, 3> face_corners(const Mesh& mesh, FaceHandle f) {
+  std::array<Point, 3> corners;
+  int k = 0;
+  for (auto v : mesh.fv_range(f))
+    corners[k++] = mesh.point(v);
+  return corners;
+}
+
 double signed_dihedral_angle(const Mesh& mesh, EdgeHandle e) {
   if (mesh.is_boundary(e))
     return 0.0;

@@ -3,6 +3,8 @@
 
 #include "core/mesh.h"
 
+#include <array>
+
 namespace holebench {
 
 struct BoundingBox {
@@ -29,6 +31,9 @@ double face_area(const Mesh& mesh, FaceHandle f);
 
 /// Centroid of a face.
 Point face_centroid(const Mesh& mesh, FaceHandle f);
+
+/// The three points of a face, in its vertex order.
+std::array<Point, 3> face_corners(const Mesh& mesh, FaceHandle f);
 
 /// Signed dihedral angle in radians across a non-boundary edge: 0 for coplanar faces,
 /// positive where the edge is convex, negative where it is reflex (concave), for a

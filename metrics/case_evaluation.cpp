@@ -12,6 +12,8 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
     const MeanDistanceOptions mean = whole_model_distance_options(options, diagonal).mean;
     input_cell_bounds_ =
         std::make_unique<MeanCellBounds>(c.input, c.complete, *complete_scene_, mean);
+    input_hausdorff_bounds_ =
+        std::make_unique<HausdorffCellBounds>(c.input, c.complete, *complete_scene_);
     if (c.input.n_faces() > 0) {
       const embree::TriangleScene input_scene(c.input);
       complete_cell_bounds_ =

@@ -23,7 +23,9 @@ class CaseEvaluation {
   /// Builds the complete model's Embree scene; the first bounds of the whole model's mean
   /// searches (surface_distance.h, MeanCellBounds): of the input's faces against the
   /// complete model (the faces a repair keeps need none of their own) and of the complete
-  /// model's faces against the input (a repair is the input away from its new faces); and,
+  /// model's faces against the input (a repair is the input away from its new faces); the
+  /// first bounds of the Hausdorff search of the input's faces against the complete model
+  /// (hausdorff_distance.h, HausdorffCellBounds); and,
   /// where `options` test self-intersections, the input's own intersecting pairs
   /// (validity.h).
   CaseEvaluation(const Case& c, const EvaluationOptions& options);
@@ -37,6 +39,10 @@ class CaseEvaluation {
   const MeanCellBounds* input_cell_bounds() const { return input_cell_bounds_.get(); }
   /// The complete model's faces' first bounds against the input, or nullptr.
   const MeanCellBounds* complete_cell_bounds() const { return complete_cell_bounds_.get(); }
+  /// The input's faces' first Hausdorff bounds against the complete model, or nullptr.
+  const HausdorffCellBounds* input_hausdorff_bounds() const {
+    return input_hausdorff_bounds_.get();
+  }
   /// The input's own intersecting pairs, or nullptr where they were not computed.
   const InputSelfIntersections* input_self_intersections() const {
     return input_self_intersections_ ? &*input_self_intersections_ : nullptr;
@@ -46,6 +52,7 @@ class CaseEvaluation {
   std::unique_ptr<embree::TriangleScene> complete_scene_;
   std::unique_ptr<MeanCellBounds> input_cell_bounds_;
   std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
+  std::unique_ptr<HausdorffCellBounds> input_hausdorff_bounds_;
   std::optional<InputSelfIntersections> input_self_intersections_;
 };
 

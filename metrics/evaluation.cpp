@@ -81,6 +81,7 @@ SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
   if (!shared)
     return first;
   first.repaired_to_complete.bounds = shared->input_cell_bounds();
+  first.repaired_to_complete.hausdorff = shared->input_hausdorff_bounds();
   if (kept && kept->order_kept) {
     first.complete_to_repaired.bounds = shared->complete_cell_bounds();
     first.complete_to_repaired.change.b0_face_of_b = &kept->input_face_of_repaired;

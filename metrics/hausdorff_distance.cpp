@@ -14,9 +14,30 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace holebench {
+namespace {
+
+// The parts of a cell's bound (DirectedSearch::bound_of) that do not depend on how much is
+// settled: bound (ii) then (i) at the corners, each of the three shared-edge bounds (iii)
+// (infinity where its two faces do not qualify), and the centroid's distance with the
+// single-triangle bound of its nearest face (infinity where it has none).
+struct BoundSteps {
+  double corners = 0.0;
+  std::array<double, 3> shared_edge{};
+  double centroid_distance = 0.0;
+  double centroid_triangle = 0.0;
+};
+
+}  // namespace
+
+struct HausdorffCellBounds::Table {
+  std::unordered_map<CellKey, BoundSteps, CellKeyHash> cells;
+};
+
 namespace {
 
 class DirectedSearch {
@@ -24,7 +45,8 @@ class DirectedSearch {
   DirectedSearch(const embree::TriangleScene& scene, const HausdorffOptions& options)
       : scene_(scene), options_(options) {}
 
-  DirectedHausdorff run(const Mesh& a, const KnownDistances& known) {
+  DirectedHausdorff run(const Mesh& a, const KnownDistances& known,
+                        const HausdorffCellBounds* first) {
     // Corner distances of the original triangles are shared through the vertices.
     VertexDistances computed;
     const VertexDistances* vertices = known.vertices;
@@ -46,10 +68,22 @@ class DirectedSearch {
     // the same result, whatever the number of threads).
     std::vector<Bound> bounds(initial.size());
     const double settled_now = settled();  // from the vertices: only grows afterwards
+    // A cell that `first` holds (the same cell against the same B) replays its recorded
+    // steps: the same bound as bound_of() gives, without its queries.
+    const HausdorffCellBounds::Table* table = first ? &first->table() : nullptr;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
                       [&](const auto& range) {
-                        for (std::size_t i = range.begin(); i != range.end(); ++i)
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          if (table) {
+                            const auto it = table->cells.find(key_of(initial[i]));
+                            if (it != table->cells.end()) {
+                              RecordedSteps steps{it->second};
+                              bounds[i] = bound_by_steps(initial[i], settled_now, steps);
+                              continue;
+                            }
+                          }
                           bounds[i] = bound_of(initial[i], settled_now);
+                        }
                       });
     // Queued all at once, in face order; the settled ones only leave their bound.
     for (std::size_t i = 0; i < initial.size(); ++i)
@@ -173,41 +207,100 @@ class DirectedSearch {
   };
 
   Bound bound_of(const TriangleCell& cell, double settled) const {
-    const auto& c = cell.corners;
-    const auto& d = cell.corner_distance;
-    const double largest_corner = *std::max_element(d.begin(), d.end());
+    LiveSteps steps{*this, cell};
+    return bound_by_steps(cell, settled, steps);
+  }
+
+ public:
+  // Every step of the cell's bound, whatever is settled (HausdorffCellBounds).
+  BoundSteps all_steps(const TriangleCell& cell) const {
+    LiveSteps live{*this, cell};
+    BoundSteps steps;
+    steps.corners = live.corners();
+    for (int i = 0; i < 3; ++i)
+      steps.shared_edge[i] = live.shared_edge(i);
+    steps.centroid_distance = live.centroid_distance();
+    steps.centroid_triangle = live.centroid_triangle();
+    return steps;
+  }
+
+ private:
+  // The steps computed as bound_by_steps() asks for them.
+  struct LiveSteps {
+    const DirectedSearch& search;
+    const TriangleCell& cell;
+    int nearest_face = -1;
+
     // Bound (ii): every point lies within longest edge / sqrt(3) of a corner (the
-    // equilateral triangle is the worst case), and the distance is 1-Lipschitz.
-    const double longest = std::sqrt(
-        std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
-    Bound bound;
-    bound.upper = largest_corner + longest * 0.57735026919;
-    // Bound (i): the distance to one triangle of B is convex, so its maximum over the
-    // cell is at a corner. Candidates: the triangles nearest to the corners, then to the
-    // centroid.
-    for (int i = 0; i < 3; ++i) {
-      const int face = cell.corner_face[i];
-      if (face >= 0 && (i == 0 || face != cell.corner_face[i - 1]))
-        bound.upper = std::min(bound.upper, single_triangle_bound(c, face));
+    // equilateral triangle is the worst case), and the distance is 1-Lipschitz. Then bound
+    // (i): the distance to one triangle of B is convex, so its maximum over the cell is at
+    // a corner. Candidates: the triangles nearest to the corners.
+    double corners() const {
+      const auto& c = cell.corners;
+      const auto& d = cell.corner_distance;
+      const double longest = std::sqrt(
+          std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
+      double upper = *std::max_element(d.begin(), d.end()) + longest * 0.57735026919;
+      for (int i = 0; i < 3; ++i) {
+        const int face = cell.corner_face[i];
+        if (face >= 0 && (i == 0 || face != cell.corner_face[i - 1]))
+          upper = std::min(upper, search.single_triangle_bound(c, face));
+      }
+      return upper;
     }
-    if (bound.upper <= settled)
-      return bound;
-    for (int i = 0; i < 3 && bound.upper > settled; ++i) {
+    // Bound (iii) of the edge from corner i to the next.
+    double shared_edge(int i) const {
       const int f1 = cell.corner_face[i], f2 = cell.corner_face[(i + 1) % 3];
       if (f1 >= 0 && f2 >= 0 && f1 != f2)
-        bound.upper = std::min(bound.upper, shared_edge_bound(c, f1, f2));
+        return search.shared_edge_bound(cell.corners, f1, f2);
+      return std::numeric_limits<double>::infinity();
     }
+    // The centroid's query, with an upper bound from the corners (1-Lipschitz).
+    double centroid_distance() {
+      const auto& c = cell.corners;
+      const auto& d = cell.corner_distance;
+      const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+      const double centroid_bound =
+          std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
+                    d[2] + (centroid - c[2]).norm()});
+      const auto nearest = search.scene_.closest_point(centroid, centroid_bound);
+      nearest_face = nearest.face;
+      return nearest.distance;
+    }
+    // Bound (i) with the triangle nearest to the centroid.
+    double centroid_triangle() const {
+      return nearest_face >= 0 ? search.single_triangle_bound(cell.corners, nearest_face)
+                               : std::numeric_limits<double>::infinity();
+    }
+  };
+
+  // The steps as recorded by all_steps().
+  struct RecordedSteps {
+    const BoundSteps& steps;
+    double corners() const { return steps.corners; }
+    double shared_edge(int i) const { return steps.shared_edge[i]; }
+    double centroid_distance() const { return steps.centroid_distance; }
+    double centroid_triangle() const { return steps.centroid_triangle; }
+  };
+
+  // The bound from the steps in order, each only where the bound is not settled yet; a step
+  // that does not apply is infinity, which leaves the bound as it is.
+  template <class Steps>
+  static Bound bound_by_steps(const TriangleCell& cell, double settled, Steps& steps) {
+    const auto& d = cell.corner_distance;
+    const double largest_corner = *std::max_element(d.begin(), d.end());
+    Bound bound;
+    bound.upper = steps.corners();
     if (bound.upper <= settled)
       return bound;
-    const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
-    const double centroid_bound =
-        std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
-                  d[2] + (centroid - c[2]).norm()});
-    const auto nearest = scene_.closest_point(centroid, centroid_bound);
+    for (int i = 0; i < 3 && bound.upper > settled; ++i)
+      bound.upper = std::min(bound.upper, steps.shared_edge(i));
+    if (bound.upper <= settled)
+      return bound;
     bound.queried = true;
-    bound.centroid_distance = nearest.distance;
-    if (nearest.face >= 0 && bound.upper > largest_corner)
-      bound.upper = std::min(bound.upper, single_triangle_bound(c, nearest.face));
+    bound.centroid_distance = steps.centroid_distance();
+    if (bound.upper > largest_corner)
+      bound.upper = std::min(bound.upper, steps.centroid_triangle());
     return bound;
   }
 
@@ -252,8 +345,40 @@ class DirectedSearch {
 }  // namespace
 
 DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
-                                     const HausdorffOptions& options, const KnownDistances& known) {
-  return DirectedSearch(b_scene, options).run(a, known);
+                                     const HausdorffOptions& options, const KnownDistances& known,
+                                     const HausdorffCellBounds* first) {
+  return DirectedSearch(b_scene, options).run(a, known, first);
+}
+
+HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const Mesh& b,
+                                         const embree::TriangleScene& b_scene)
+    : table_(std::make_unique<Table>()) {
+  // The cells as surface_distance's search makes them: the same first pass over the
+  // vertices, the faces lying on B left out (the search skips them).
+  const SharedFaces shared = shared_faces(a0, b);
+  const VertexDistances vertices = vertex_distances(a0, b_scene, &shared.b_face_of_a);
+  std::vector<TriangleCell> cells;
+  cells.reserve(a0.n_faces());
+  for (auto f : a0.faces()) {
+    if (shared.b_face_of_a[f.idx()] < 0)
+      cells.push_back(face_cell(a0, f, vertices));
+  }
+  const HausdorffOptions options;  // the steps do not depend on the error bound
+  const DirectedSearch search(b_scene, options);
+  std::vector<BoundSteps> steps(cells.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i)
+      steps[i] = search.all_steps(cells[i]);
+  });
+  table_->cells.reserve(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    table_->cells.emplace(key_of(cells[i]), steps[i]);
+}
+
+HausdorffCellBounds::~HausdorffCellBounds() = default;
+
+std::size_t HausdorffCellBounds::size() const {
+  return table_->cells.size();
 }
 
 HausdorffResult hausdorff_distance(const Mesh& a, const Mesh& b, const HausdorffOptions& options) {

@@ -27,6 +27,7 @@
 #include "metrics/vertex_distances.h"
 
 #include <cstddef>
+#include <memory>
 
 namespace holebench {
 
@@ -56,12 +57,44 @@ struct HausdorffResult {
   bool converged() const { return a_to_b.converged && b_to_a.converged; }
 };
 
+class HausdorffCellBounds;
+
 /// h(A, B) with `b_scene` an Embree scene of B (reuse it across calls; it may hold only the
 /// faces of B that points of A's unshared faces can be closest to) and, optionally, what is
-/// known already: A's vertex distances and the faces A shares with B (vertex_distances.h).
+/// known already: A's vertex distances and the faces A shares with B (vertex_distances.h),
+/// and the first bounds of another mesh's faces against the same B (`first`: taken for
+/// A's faces with the same cells).
 DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
                                      const HausdorffOptions& options = {},
-                                     const KnownDistances& known = {});
+                                     const KnownDistances& known = {},
+                                     const HausdorffCellBounds* first = nullptr);
+
+/// The Hausdorff search's first bounds of the faces of a mesh A0 against a surface B: each
+/// face's cell (its corners in the face's order, their distances to B and nearest faces of
+/// B, as the first pass over A0's vertices gives them) with every step of its upper bound
+/// (i)-(iii) and its centroid's query, taken whether or not the search would need them. A
+/// search of another mesh A against the same B (the same triangles in the same order) replays
+/// them for every face of A whose cell is the same, bit for bit: each step in the order and
+/// under the conditions the search takes it, so that the cell gets the same bound, counts the
+/// same query and the search gives the same result as without them. Built once per case
+/// (case_evaluation.h): the input's faces against the complete model, which a repair keeps
+/// for the most part, so that each job bounds only the faces it made or changed.
+class HausdorffCellBounds {
+ public:
+  /// `b` is the mesh of `b_scene` (for the faces A0 shares with it, which need no bounds).
+  HausdorffCellBounds(const Mesh& a0, const Mesh& b, const embree::TriangleScene& b_scene);
+  ~HausdorffCellBounds();
+  HausdorffCellBounds(const HausdorffCellBounds&) = delete;
+  HausdorffCellBounds& operator=(const HausdorffCellBounds&) = delete;
+
+  std::size_t size() const;  ///< cells held
+
+  struct Table;  ///< hausdorff_distance.cpp
+  const Table& table() const { return *table_; }
+
+ private:
+  std::unique_ptr<Table> table_;
+};
 
 /// H(A, B): both directions.
 HausdorffResult hausdorff_distance(const Mesh& a, const Mesh& b,

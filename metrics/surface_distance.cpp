@@ -67,14 +67,17 @@ bool edges_meet_triangles(const std::array<Point, 3>& a, const std::array<Point,
 double triangle_triangle_distance(const std::array<Point, 3>& a, const std::array<Point, 3>& b) {
   if (edges_meet_triangles(a, b))
     return 0.0;
+  // The smallest square, then one square root: the root is monotone and correctly rounded,
+  // so this is the smallest of the distances, bit for bit.
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
-    best = std::min(best, (closest_point_on_triangle(a[i], b[0], b[1], b[2]) - a[i]).norm());
-    best = std::min(best, (closest_point_on_triangle(b[i], a[0], a[1], a[2]) - b[i]).norm());
+    best = std::min(best, (closest_point_on_triangle(a[i], b[0], b[1], b[2]) - a[i]).sqrnorm());
+    best = std::min(best, (closest_point_on_triangle(b[i], a[0], a[1], a[2]) - b[i]).sqrnorm());
     for (int j = 0; j < 3; ++j)
-      best = std::min(best, segment_segment_distance(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
+      best = std::min(best,
+                      segment_segment_squared_distance(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
   }
-  return best;
+  return std::sqrt(best);
 }
 
 GrowingBox box_of(const std::array<Point, 3>& t) {
@@ -214,38 +217,6 @@ Estimate estimate(double area, double sum_mean, double sum_mean_width, double su
   e.rms = 0.5 * (hi + lo);
   e.rms_error = 0.5 * (hi - lo);
   return e;
-}
-
-// A cell's inputs to MeanSearch::bound(), bit for bit: its corners, their distances and
-// nearest faces of B.
-struct CellKey {
-  std::array<std::uint64_t, 12> bits{};
-  std::array<int, 3> faces{};
-  bool operator==(const CellKey& other) const { return bits == other.bits && faces == other.faces; }
-};
-struct CellKeyHash {
-  std::size_t operator()(const CellKey& key) const {
-    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
-    const auto mix = [&h](std::uint64_t word) {
-      h ^= word;
-      h *= 1099511628211ull;
-    };
-    for (std::uint64_t word : key.bits)
-      mix(word);
-    for (int face : key.faces)
-      mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(face)));
-    return static_cast<std::size_t>(h);
-  }
-};
-CellKey key_of(const TriangleCell& cell) {
-  CellKey key;
-  for (int i = 0; i < 3; ++i) {
-    for (int k = 0; k < 3; ++k)
-      std::memcpy(&key.bits[3 * i + k], &cell.corners[i][k], sizeof(double));
-    std::memcpy(&key.bits[9 + i], &cell.corner_distance[i], sizeof(double));
-  }
-  key.faces = cell.corner_face;
-  return key;
 }
 
 // What MeanSearch::bound() gives a cell.
@@ -500,8 +471,12 @@ class MeanSearch {
     // most the mean of its corner values. T: the triangles nearest to centroid and corners.
     double mean_hi = std::numeric_limits<double>::infinity();
     double square_hi = std::numeric_limits<double>::infinity();
-    for (int face : {nearest.face, cell.corner_face[0], cell.corner_face[1], cell.corner_face[2]}) {
-      if (face < 0)
+    const std::array<int, 4> faces = {nearest.face, cell.corner_face[0], cell.corner_face[1],
+                                      cell.corner_face[2]};
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+      const int face = faces[k];
+      // Each triangle once: the nearest to the centroid and to the corners are mostly one.
+      if (face < 0 || std::find(faces.begin(), faces.begin() + k, face) != faces.begin() + k)
         continue;
       const auto f = corner_distances_to(c, face);
       hi = std::min(hi, std::max({f[0], f[1], f[2]}));
@@ -879,6 +854,15 @@ EarlierVertexAnswer earlier_vertex_answers(const Mesh& a, const FirstBounds* fir
 
 }  // namespace
 
+namespace {
+
+// The Hausdorff search's first bounds that `first` holds, where its B is the search's.
+const HausdorffCellBounds* hausdorff_first(const FirstBounds* first) {
+  return first && !first->change.b0_face_of_b ? first->hausdorff : nullptr;
+}
+
+}  // namespace
+
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
                                  const SurfaceDistanceOptions& options,
@@ -894,8 +878,10 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
   const KnownDistances a_known{&a_vertices, &shared.b_face_of_a};
   const KnownDistances b_known{&b_vertices, &shared.a_face_of_b};
   SurfaceDistance result;
-  result.hausdorff.a_to_b = directed_hausdorff(a, b_scene, options.hausdorff, a_known);
-  result.hausdorff.b_to_a = directed_hausdorff(b, a_scene, options.hausdorff, b_known);
+  result.hausdorff.a_to_b =
+      directed_hausdorff(a, b_scene, options.hausdorff, a_known, hausdorff_first(a_first_bounds));
+  result.hausdorff.b_to_a =
+      directed_hausdorff(b, a_scene, options.hausdorff, b_known, hausdorff_first(b_first_bounds));
   result.a_to_b = directed_mean_distance(a, b_scene, options.mean, a_known, a_first_bounds);
   result.b_to_a = directed_mean_distance(b, a_scene, options.mean, b_known, b_first_bounds);
   // The shared first pass counts once, with the Hausdorff search.

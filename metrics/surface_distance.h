@@ -99,11 +99,14 @@ struct SurfaceChange {
   GrowingBox changed;
 };
 
-/// Bounds already computed for the first pass of a mean search (MeanCellBounds), and how
-/// the search's B differs from theirs.
+/// Bounds already computed for the first pass of a mean search (MeanCellBounds) and of a
+/// Hausdorff search (HausdorffCellBounds), and how the search's B differs from theirs.
 struct FirstBounds {
   const MeanCellBounds* bounds = nullptr;
   SurfaceChange change;
+  /// Taken only where B is B0 (`change.b0_face_of_b` null): surface_distance()'s Hausdorff
+  /// search of A against B.
+  const HausdorffCellBounds* hausdorff = nullptr;
 };
 
 /// m(A, B) and r(A, B) with `b_scene` an Embree scene of B. A mesh without area gives

@@ -1,8 +1,33 @@
 #include "metrics/triangle_cell.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace holebench {
+
+std::size_t CellKeyHash::operator()(const CellKey& key) const {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](std::uint64_t word) {
+    h ^= word;
+    h *= 1099511628211ull;
+  };
+  for (std::uint64_t word : key.bits)
+    mix(word);
+  for (int face : key.faces)
+    mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(face)));
+  return static_cast<std::size_t>(h);
+}
+
+CellKey key_of(const TriangleCell& cell) {
+  CellKey key;
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k)
+      std::memcpy(&key.bits[3 * i + k], &cell.corners[i][k], sizeof(double));
+    std::memcpy(&key.bits[9 + i], &cell.corner_distance[i], sizeof(double));
+  }
+  key.faces = cell.corner_face;
+  return key;
+}
 
 TriangleCell face_cell(const Mesh& a, FaceHandle f, const VertexDistances& vertices) {
   TriangleCell cell;

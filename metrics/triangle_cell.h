@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace holebench {
 
@@ -24,6 +25,19 @@ struct TriangleCell {
   double priority = 0.0;  // the queue refines the largest first (cell_queue.h)
   std::size_t order = 0;  // creation order: breaks ties in the queue deterministically
 };
+
+/// A cell's inputs to a search's bounds, bit for bit: its corners, their distances and
+/// nearest faces of B. Tables of bounds computed once per case (MeanCellBounds,
+/// HausdorffCellBounds) are keyed by it.
+struct CellKey {
+  std::array<std::uint64_t, 12> bits{};
+  std::array<int, 3> faces{};
+  bool operator==(const CellKey& other) const { return bits == other.bits && faces == other.faces; }
+};
+struct CellKeyHash {
+  std::size_t operator()(const CellKey& key) const;  ///< FNV-1a over the words
+};
+CellKey key_of(const TriangleCell& cell);
 
 /// The cell of face `f` of A: its corners (in the face's vertex order) with their distances
 /// and nearest faces from the first pass over A's vertices.

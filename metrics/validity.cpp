@@ -17,14 +17,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::array<Point, 3> face_points(const Mesh& mesh, FaceHandle f) {
-  std::array<Point, 3> t;
-  int k = 0;
-  for (auto v : mesh.fv_range(f))
-    t[k++] = mesh.point(v);
-  return t;
-}
-
 // The triangle's points in a canonical cyclic rotation (smallest point first), so that two
 // faces with the same points in the same cyclic order compare equal.
 std::array<std::array<double, 3>, 3> canonical(const std::array<Point, 3>& t) {
@@ -179,7 +171,7 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   for (auto f : repaired.faces()) {
     if (!is_new(repaired, f))
       continue;
-    const auto t = face_points(repaired, f);
+    const auto t = face_corners(repaired, f);
     if (face_area(repaired, f) <= options.degenerate_area ||
         smallest_angle_degrees(t) < options.min_angle_degrees)
       ++result.new_degenerate_faces;
@@ -198,9 +190,9 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   if (!not_kept.empty()) {
     std::set<std::array<std::array<double, 3>, 3>> repaired_faces;
     for (auto f : repaired.faces())
-      repaired_faces.insert(canonical(face_points(repaired, f)));
+      repaired_faces.insert(canonical(face_corners(repaired, f)));
     for (int f : not_kept) {
-      if (!repaired_faces.count(canonical(face_points(input, input.face_handle(f)))))
+      if (!repaired_faces.count(canonical(face_corners(input, input.face_handle(f)))))
         ++result.original_faces_changed;
     }
   }

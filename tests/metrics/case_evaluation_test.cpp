@@ -53,8 +53,11 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       ASSERT_NE(shared.complete_scene(), nullptr);
       ASSERT_NE(shared.input_self_intersections(), nullptr);
       ASSERT_NE(shared.input_cell_bounds(), nullptr);
-      if (noise > 0.0)  // no input face lies on the complete model: each has its bounds
+      ASSERT_NE(shared.input_hausdorff_bounds(), nullptr);
+      if (noise > 0.0) {  // no input face lies on the complete model: each has its bounds
         EXPECT_GT(shared.input_cell_bounds()->size(), c.input.n_faces() / 2);
+        EXPECT_EQ(shared.input_hausdorff_bounds()->size(), c.input.n_faces());
+      }
       const std::string what = std::string(id) + " noise " + std::to_string(noise);
       MethodResult fan;
       fan.repaired = fan_closing(c.input);

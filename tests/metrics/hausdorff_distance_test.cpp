@@ -2,6 +2,8 @@
 
 #include "metrics/evaluation.h"
 
+#include "metrics/embree/triangle_scene.h"
+
 #include "core/geometry.h"
 #include "generators/box_holes.h"
 #include "generators/box_solid.h"
@@ -17,6 +19,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <string>
 
 namespace holebench {
 namespace {
@@ -154,6 +157,59 @@ TEST(HausdorffDistance, SameInputsGiveTheSameNumbers) {
   EXPECT_EQ(first.lower(), second.lower());
   EXPECT_EQ(first.upper(), second.upper());
   EXPECT_EQ(first.a_to_b.queries, second.a_to_b.queries);
+}
+
+// The first bounds of the input's faces (HausdorffCellBounds) replayed for a repair of it
+// give the same search: the same bounds, queries and convergence, bit for bit, whatever the
+// error bound (and so whatever the search takes as settled: the repair's patch can raise
+// the largest distance found first above the input's). Noisy, so that no input face lies on
+// the complete model and every kept face replays its steps.
+TEST(HausdorffCellBounds, ReplayedBoundsGiveTheSameSearch) {
+  for (const char* id : {"box/corner", "brep/k3/inner/convex-convex-convex/small"}) {
+    const Case c = generators::make_case(id, 0, 25.0);
+    const embree::TriangleScene complete_scene(c.complete);
+    const HausdorffCellBounds first(c.input, c.complete, complete_scene);
+    EXPECT_EQ(first.size(), c.input.n_faces()) << id;
+    const Mesh repaired = filled_without_refinement(c.input);
+    const double diagonal = bounding_box_diagonal(c.complete);
+    for (double bound : {1e-2, 1e-4, 1e-6}) {
+      HausdorffOptions options;
+      options.error_bound = bound * diagonal;
+      const DirectedHausdorff alone = directed_hausdorff(repaired, complete_scene, options);
+      const DirectedHausdorff replayed =
+          directed_hausdorff(repaired, complete_scene, options, {}, &first);
+      const std::string what = std::string(id) + " bound " + std::to_string(bound);
+      EXPECT_EQ(alone.lower, replayed.lower) << what;
+      EXPECT_EQ(alone.upper, replayed.upper) << what;
+      EXPECT_EQ(alone.queries, replayed.queries) << what;
+      EXPECT_EQ(alone.converged, replayed.converged) << what;
+    }
+  }
+}
+
+// The same on a flat square above another triangulated otherwise, where the shared-edge
+// bound (iii) of the first cells decides which of them are settled.
+TEST(HausdorffCellBounds, ReplayedSharedEdgeBoundsGiveTheSameSearch) {
+  const Mesh coarse = build_mesh(test::grid_soup(4));
+  TriangleSoup fine = test::grid_soup(5);
+  for (auto& p : fine.points) {
+    p *= 4.0 / 5.0;
+    p[2] += 1e-3;
+  }
+  const Mesh lifted = build_mesh(fine);
+  const embree::TriangleScene coarse_scene(coarse);
+  const HausdorffCellBounds first(lifted, coarse, coarse_scene);
+  for (double bound : {1e-2, 1e-4, 1e-6}) {
+    HausdorffOptions options;
+    options.error_bound = bound;
+    options.max_queries = 200'000;
+    const DirectedHausdorff alone = directed_hausdorff(lifted, coarse_scene, options);
+    const DirectedHausdorff replayed =
+        directed_hausdorff(lifted, coarse_scene, options, {}, &first);
+    EXPECT_EQ(alone.lower, replayed.lower) << bound;
+    EXPECT_EQ(alone.upper, replayed.upper) << bound;
+    EXPECT_EQ(alone.queries, replayed.queries) << bound;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "harness/outputs/render/case_view.h"
+#include "metrics/embree/near_face_distance.h"
 #include "metrics/embree/triangle_scene.h"
 
 #include <algorithm>
@@ -208,18 +209,13 @@ Image job_picture(const Case& c, const MethodResult& result, const CasePicture& 
   SnapshotOptions snapshot;
   snapshot.width = snapshot.height = options.view_size;
   snapshot.samples_per_axis = options.samples_per_axis;
-  // The pixels are coloured in scan order, so the last patch point coloured is near: the
-  // distance is 1-Lipschitz, d(hit) <= d(last) + |hit - last|, a bound that lets the BVH
-  // skip the model's far side. The answer is the same as the unbounded query's.
-  std::optional<std::pair<Point, double>> last;
+  // Each patch face's nearby triangles of the complete model found once for its pixels: the
+  // same distances as the scene's closest points (near_face_distance.h).
+  embree::NearFaceDistance distances(mesh, truth);
   snapshot.colouring = [&](FaceHandle f, const Point& hit) -> std::optional<Rgb> {
     if (!is_new(mesh, f))
       return kept_colour();
-    const double distance =
-        last ? truth.closest_point(hit, last->second + (hit - last->first).norm()).distance
-             : truth.closest_point(hit).distance;
-    last.emplace(hit, distance);
-    return heat_colour(distance / diagonal, scale);
+    return heat_colour(distances.distance(f, hit) / diagonal, scale);
   };
   const Overlay overlay = job_overlay(c, result);
 

@@ -185,13 +185,7 @@ void write_repaired_mesh(const Case& c, const Mesh& repaired, const std::filesys
   for (auto f : repaired.faces()) {
     if (!is_new(repaired, f))
       continue;
-    std::array<Point, 3> corners;
-    int i = 0;
-    for (auto v : repaired.fv_range(f)) {
-      if (i < 3)
-        corners[i] = repaired.point(v);
-      ++i;
-    }
+    const std::array<Point, 3> corners = face_corners(repaired, f);
     const double longest =
         std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
                   (corners[0] - corners[2]).norm()});
