@@ -10,14 +10,16 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
   if (c.complete.n_faces() > 0 && diagonal > 0.0) {
     complete_scene_ = std::make_unique<embree::TriangleScene>(c.complete);
     const MeanDistanceOptions mean = whole_model_distance_options(options, diagonal).mean;
+    // One first pass of the input against the complete model for both of its tables.
+    const FirstPass input_pass = first_pass(c.input, c.complete, *complete_scene_);
     input_cell_bounds_ =
-        std::make_unique<MeanCellBounds>(c.input, c.complete, *complete_scene_, mean);
+        std::make_unique<MeanCellBounds>(c.input, *complete_scene_, input_pass, mean);
     input_hausdorff_bounds_ =
-        std::make_unique<HausdorffCellBounds>(c.input, c.complete, *complete_scene_);
+        std::make_unique<HausdorffCellBounds>(c.input, *complete_scene_, input_pass);
     if (c.input.n_faces() > 0) {
       const embree::TriangleScene input_scene(c.input);
-      complete_cell_bounds_ =
-          std::make_unique<MeanCellBounds>(c.complete, c.input, input_scene, mean);
+      complete_cell_bounds_ = std::make_unique<MeanCellBounds>(
+          c.complete, input_scene, first_pass(c.complete, c.input, input_scene), mean);
     }
   }
   if (options.self_intersections)

@@ -350,18 +350,16 @@ DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene&
   return DirectedSearch(b_scene, options).run(a, known, first);
 }
 
-HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const Mesh& b,
-                                         const embree::TriangleScene& b_scene)
+HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleScene& b_scene,
+                                         const FirstPass& first_pass)
     : table_(std::make_unique<Table>()) {
-  // The cells as surface_distance's search makes them: the same first pass over the
-  // vertices, the faces lying on B left out (the search skips them).
-  const SharedFaces shared = shared_faces(a0, b);
-  const VertexDistances vertices = vertex_distances(a0, b_scene, &shared.b_face_of_a);
+  // The cells as the search makes them: the same first pass over the vertices, the faces
+  // lying on B left out (the search skips them).
   std::vector<TriangleCell> cells;
   cells.reserve(a0.n_faces());
   for (auto f : a0.faces()) {
-    if (shared.b_face_of_a[f.idx()] < 0)
-      cells.push_back(face_cell(a0, f, vertices));
+    if (first_pass.b_face_of_a[f.idx()] < 0)
+      cells.push_back(face_cell(a0, f, first_pass.vertices));
   }
   const HausdorffOptions options;  // the steps do not depend on the error bound
   const DirectedSearch search(b_scene, options);

@@ -81,8 +81,10 @@ DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene&
 /// for the most part, so that each job bounds only the faces it made or changed.
 class HausdorffCellBounds {
  public:
-  /// `b` is the mesh of `b_scene` (for the faces A0 shares with it, which need no bounds).
-  HausdorffCellBounds(const Mesh& a0, const Mesh& b, const embree::TriangleScene& b_scene);
+  /// `first_pass`: A0's against B (vertex_distances.h; the faces A0 shares with B need no
+  /// bounds).
+  HausdorffCellBounds(const Mesh& a0, const embree::TriangleScene& b_scene,
+                      const FirstPass& first_pass);
   ~HausdorffCellBounds();
   HausdorffCellBounds(const HausdorffCellBounds&) = delete;
   HausdorffCellBounds& operator=(const HausdorffCellBounds&) = delete;

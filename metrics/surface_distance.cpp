@@ -731,20 +731,19 @@ DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::Triangl
   return MeanSearch(b_scene, options).run(a, known, first_bounds);
 }
 
-MeanCellBounds::MeanCellBounds(const Mesh& a0, const Mesh& b0,
-                               const embree::TriangleScene& b0_scene,
-                               const MeanDistanceOptions& options)
+MeanCellBounds::MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_scene,
+                               const FirstPass& first_pass, const MeanDistanceOptions& options)
     : table_(std::make_unique<Table>()) {
   table_->error_bound = options.error_bound;
   table_->relative_error_bound = options.relative_error_bound;
-  // The cells as surface_distance's search makes them: the same first pass over the
-  // vertices, the faces lying on B0 left out (the search skips them).
-  const SharedFaces shared = shared_faces(a0, b0);
-  table_->vertices = vertex_distances(a0, b0_scene, &shared.b_face_of_a);
+  // The cells as the search makes them: the same first pass over the vertices, the faces
+  // lying on B0 left out (the search skips them).
+  const std::vector<int>& b0_face_of_a0 = first_pass.b_face_of_a;
+  table_->vertices = first_pass.vertices;
   const VertexDistances& vertices = table_->vertices;
   table_->vertex_queried.assign(a0.n_vertices(), 1);
   for (auto f : a0.faces()) {
-    if (shared.b_face_of_a[f.idx()] >= 0) {
+    if (b0_face_of_a0[f.idx()] >= 0) {
       for (auto v : a0.fv_range(f))
         table_->vertex_queried[v.idx()] = 0;
     }
@@ -755,7 +754,7 @@ MeanCellBounds::MeanCellBounds(const Mesh& a0, const Mesh& b0,
   std::vector<Cell> cells;
   cells.reserve(a0.n_faces());
   for (auto f : a0.faces()) {
-    if (shared.b_face_of_a[f.idx()] >= 0)
+    if (b0_face_of_a0[f.idx()] >= 0)
       continue;
     Cell cell(face_cell(a0, f, vertices));
     if (triangle_area(cell.corners) > 0.0)
@@ -851,10 +850,6 @@ EarlierVertexAnswer earlier_vertex_answers(const Mesh& a, const FirstBounds* fir
     return true;
   };
 }
-
-}  // namespace
-
-namespace {
 
 // The Hausdorff search's first bounds that `first` holds, where its B is the search's.
 const HausdorffCellBounds* hausdorff_first(const FirstBounds* first) {

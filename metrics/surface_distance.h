@@ -131,8 +131,9 @@ DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::Triangl
 /// against the input (a repair differs from it only around the holes).
 class MeanCellBounds {
  public:
-  /// `b0` is the mesh of `b0_scene` (for the faces A0 shares with it, which need no bounds).
-  MeanCellBounds(const Mesh& a0, const Mesh& b0, const embree::TriangleScene& b0_scene,
+  /// `first_pass`: A0's against B0 (vertex_distances.h; the faces A0 shares with B0 need
+  /// no bounds).
+  MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_scene, const FirstPass& first_pass,
                  const MeanDistanceOptions& options);
   ~MeanCellBounds();
   MeanCellBounds(const MeanCellBounds&) = delete;

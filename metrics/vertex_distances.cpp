@@ -1,6 +1,7 @@
 #include "metrics/vertex_distances.h"
 
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/shared_faces.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -64,6 +65,13 @@ VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_s
   });
   result.queries = queries;
   return result;
+}
+
+FirstPass first_pass(const Mesh& a, const Mesh& b, const embree::TriangleScene& b_scene) {
+  FirstPass pass;
+  pass.b_face_of_a = shared_faces(a, b).b_face_of_a;
+  pass.vertices = vertex_distances(a, b_scene, &pass.b_face_of_a);
+  return pass;
 }
 
 }  // namespace holebench

@@ -45,4 +45,16 @@ struct KnownDistances {
   const std::vector<int>* b_face_of_a = nullptr;  ///< faces of A lying on B: skipped
 };
 
+/// The first pass of A against B, done once for the searches and first-bound tables that
+/// share it (case_evaluation.h): the faces of A lying on B and the distances of A's
+/// vertices.
+struct FirstPass {
+  std::vector<int> b_face_of_a;  ///< by face of A: the face of B it coincides with, or -1
+  VertexDistances vertices;      ///< vertex_distances(a, b_scene, &b_face_of_a)
+  KnownDistances known() const { return {&vertices, &b_face_of_a}; }
+};
+
+/// `b` is the mesh of `b_scene`.
+FirstPass first_pass(const Mesh& a, const Mesh& b, const embree::TriangleScene& b_scene);
+
 }  // namespace holebench

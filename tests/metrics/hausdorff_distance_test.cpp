@@ -168,7 +168,8 @@ TEST(HausdorffCellBounds, ReplayedBoundsGiveTheSameSearch) {
   for (const char* id : {"box/corner", "brep/k3/inner/convex-convex-convex/small"}) {
     const Case c = generators::make_case(id, 0, 25.0);
     const embree::TriangleScene complete_scene(c.complete);
-    const HausdorffCellBounds first(c.input, c.complete, complete_scene);
+    const HausdorffCellBounds first(c.input, complete_scene,
+                                    first_pass(c.input, c.complete, complete_scene));
     EXPECT_EQ(first.size(), c.input.n_faces()) << id;
     const Mesh repaired = filled_without_refinement(c.input);
     const double diagonal = bounding_box_diagonal(c.complete);
@@ -198,7 +199,7 @@ TEST(HausdorffCellBounds, ReplayedSharedEdgeBoundsGiveTheSameSearch) {
   }
   const Mesh lifted = build_mesh(fine);
   const embree::TriangleScene coarse_scene(coarse);
-  const HausdorffCellBounds first(lifted, coarse, coarse_scene);
+  const HausdorffCellBounds first(lifted, coarse_scene, first_pass(lifted, coarse, coarse_scene));
   for (double bound : {1e-2, 1e-4, 1e-6}) {
     HausdorffOptions options;
     options.error_bound = bound;
