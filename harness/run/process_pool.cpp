@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -49,8 +50,36 @@ struct Child {
   Clock::time_point started;
   std::string output;
   bool timed_out = false;
+  /// The pipe gave its end of file (the child closed it, and is ending): it is no longer
+  /// polled, since it would wake the poll at once, again and again, until the child is gone.
+  bool pipe_ended = false;
   std::filesystem::path temporary_dir;  ///< the child's TMPDIR, removed when it ends
 };
+
+// How long a poll waits: 100 ms while every pipe is open (a record wakes it earlier), 1 ms
+// once a child has closed its pipe and is ending, to reap it soon without spinning on a core
+// that a job may need.
+constexpr int kPollMilliseconds = 100;
+constexpr int kEndingPollMilliseconds = 1;
+
+// The entry that polls a child's pipe (none once the pipe has ended).
+pollfd pipe_poll_entry(const Child& child) {
+  return {child.pipe_ended ? -1 : child.pipe_fd, POLLIN, 0};
+}
+
+// Reads what a child's pipe holds after a poll said it is ready: true when it gave data
+// (appended to the child's output); false at its end, which is then recorded.
+bool read_ready_pipe(Child& child) {
+  char buffer[65536];
+  const ssize_t n = ::read(child.pipe_fd, buffer, sizeof(buffer));
+  if (n > 0) {
+    child.output.append(buffer, static_cast<std::size_t>(n));
+    return true;
+  }
+  if (n == 0 || errno != EINTR)
+    child.pipe_ended = true;
+  return false;
+}
 
 // A fresh folder for one job's temporary files (an external method's mesh files): the job
 // sees it as TMPDIR, and the runner removes it when the job ends, even when it was stopped.
@@ -222,16 +251,10 @@ bool reap_if_ended(Child& child, int& status) {
 // `timeout_seconds` (0: no limit). The child's wait status.
 int wait_for_child(Child& child, double timeout_seconds) {
   for (;;) {
-    pollfd fd{child.pipe_fd, POLLIN, 0};
-    ::poll(&fd, 1, 100);
-    if (fd.revents & (POLLIN | POLLHUP | POLLERR)) {
-      char buffer[65536];
-      const ssize_t n = ::read(child.pipe_fd, buffer, sizeof(buffer));
-      if (n > 0) {
-        child.output.append(buffer, static_cast<std::size_t>(n));
-        continue;
-      }
-    }
+    pollfd fd = pipe_poll_entry(child);
+    ::poll(&fd, 1, child.pipe_ended ? kEndingPollMilliseconds : kPollMilliseconds);
+    if ((fd.revents & (POLLIN | POLLHUP | POLLERR)) && read_ready_pipe(child))
+      continue;
     if (timeout_seconds > 0 && seconds_since(child.started) > timeout_seconds && !child.timed_out) {
       ::kill(-child.pid, SIGKILL);
       child.timed_out = true;
@@ -269,9 +292,9 @@ constexpr const char* kPreparedLine = "prepared";
 
 // The body of a group's process: prepares what the group's jobs share once, says so, then
 // runs each job in a child process of its own, one after the other, each under the job's
-// timeout, and writes each record as a line to `fd` as it ends.
-void run_group(const std::vector<Job>& group, const GroupFunction& prepare,
-               const ProcessPoolOptions& options, int fd) {
+// timeout, and writes each record as a line to `fd` as it ends; then ends the process.
+[[noreturn]] void run_group(const std::vector<Job>& group, const GroupFunction& prepare,
+                            const ProcessPoolOptions& options, int fd) {
   JobFunction run_one;
   try {
     run_one = prepare(group);
@@ -306,6 +329,11 @@ void run_group(const std::vector<Job>& group, const GroupFunction& prepare,
       line = record_to_json_line(finish_child(child, job, status)) + "\n";
     write_all(fd, line);
   }
+  // Every record sent: the process ends here, leaving what it made (the case, its
+  // evaluation's tables and scenes) to the kernel, which takes it back at once; freeing it
+  // piece by piece took about as long as forking a job.
+  ::close(fd);
+  std::_Exit(0);
 }
 
 // A group's process as the runner sees it: its jobs (indices into the plan, in the order
@@ -494,20 +522,18 @@ ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFuncti
       ++next;
     }
     std::vector<pollfd> fds;
-    for (const auto& group : running)
-      fds.push_back({group.process.pipe_fd, POLLIN, 0});
-    ::poll(fds.data(), fds.size(), 100);
+    bool any_ending = false;
+    for (const auto& group : running) {
+      fds.push_back(pipe_poll_entry(group.process));
+      any_ending = any_ending || group.process.pipe_ended;
+    }
+    ::poll(fds.data(), fds.size(), any_ending ? kEndingPollMilliseconds : kPollMilliseconds);
     for (std::size_t g = 0; g < running.size(); ++g) {
       RunningGroup& group = running[g];
       Child& child = group.process;
-      if (fds[g].revents & (POLLIN | POLLHUP | POLLERR)) {
-        char buffer[65536];
-        const ssize_t n = ::read(child.pipe_fd, buffer, sizeof(buffer));
-        if (n > 0) {
-          child.output.append(buffer, static_cast<std::size_t>(n));
-          take_lines(group);
-          continue;  // more may follow; the pipe closes when the process ends
-        }
+      if ((fds[g].revents & (POLLIN | POLLHUP | POLLERR)) && read_ready_pipe(child)) {
+        take_lines(group);
+        continue;  // more may follow; the pipe closes when the process ends
       }
       // The group's process stops each job past the timeout itself; it is stopped here
       // only when it sends nothing for longer than that (making its case hung), with a
