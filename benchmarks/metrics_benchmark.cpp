@@ -8,6 +8,7 @@
 #include "core/mesh_builder.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/render/case_view.h"
+#include "harness/outputs/render/image.h"
 #include "harness/outputs/render/snapshot.h"
 #include "harness/run/job.h"
 #include "methods/registry.h"
@@ -31,7 +32,10 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
@@ -295,6 +299,20 @@ void BM_RenderSnapshot(benchmark::State& state) {
       rays * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RenderSnapshot)->Unit(benchmark::kMillisecond);
+
+// Writing that snapshot as PNG (render::write_png, the settings every picture is written
+// with); bytes_per_image is the file's size.
+void BM_WritePng(benchmark::State& state) {
+  const Case c = generators::make_case("cad/fandisk/face_interior/large");
+  const auto image = render::render_snapshot(c.input, render::hole_camera(c), {});
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("holebench_bm_write_png_" + std::to_string(::getpid()) + ".png");
+  for (auto _ : state)
+    render::write_png(image, path);
+  state.counters["bytes_per_image"] = static_cast<double>(std::filesystem::file_size(path));
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_WritePng)->Unit(benchmark::kMillisecond);
 
 // Raw Embree on the snapshot's own rays and mesh, one rtcIntersect1 per ray on one thread,
 // the scene built once outside the timing: the throughput BM_RenderSnapshot is measured

@@ -51,7 +51,6 @@ struct KnownDistances {
 struct FirstPass {
   std::vector<int> b_face_of_a;  ///< by face of A: the face of B it coincides with, or -1
   VertexDistances vertices;      ///< vertex_distances(a, b_scene, &b_face_of_a)
-  KnownDistances known() const { return {&vertices, &b_face_of_a}; }
 };
 
 /// `b` is the mesh of `b_scene`.
