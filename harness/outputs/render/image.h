@@ -1,4 +1,5 @@
-// An 8-bit RGB image and its PNG output (through OpenImageIO).
+// An 8-bit RGB image and its PNG output (through OpenImageIO, in a module loaded at the first
+// picture: image_file_module.h).
 #pragma once
 
 #include <cstdint>
@@ -32,17 +33,21 @@ void paste(Image& sheet, const Image& tile, int x0, int y0);
 void fill(Image& image, const Rgb& colour);
 
 /// Reads an image file (PNG and the other formats OpenImageIO knows) as 8-bit RGB (grey is
-/// repeated, alpha dropped). Throws std::runtime_error with OpenImageIO's message on failure.
+/// repeated, alpha dropped). Throws std::runtime_error with OpenImageIO's message on failure,
+/// or the loader's when the image-file module cannot be loaded.
 Image read_image(const std::filesystem::path& path);
 
-/// Writes `image` as PNG. Throws std::runtime_error with OpenImageIO's message on failure.
+/// Writes `image` as PNG. Throws std::runtime_error with OpenImageIO's message on failure, or
+/// the loader's when the image-file module cannot be loaded.
 void write_png(const Image& image, const std::filesystem::path& path);
 
-/// Loads what writing a PNG needs once (OpenImageIO's catalogue of its plugins), so that the
-/// processes forked afterwards find it loaded instead of each loading it again.
+/// Loads what writing a PNG needs once (the image-file module and OpenImageIO's catalogue of
+/// its plugins), so that the processes forked afterwards find it loaded instead of each
+/// loading it again. Throws std::runtime_error when the module cannot be loaded.
 void load_png_writer();
 
-/// OpenImageIO's version string, for the results' context block.
+/// The version of OpenImageIO the module was built against, for the results' context block
+/// (from its headers: asking for it loads nothing).
 const char* openimageio_version();
 
 }  // namespace holebench::render
