@@ -97,9 +97,33 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
                    Recorder& out) {
   const Mesh& repaired = result.repaired;
   const SurfaceDistanceOptions whole = whole_model_distance_options(options, diagonal);
+  std::vector<int> removed;
+  for (const auto& hole : c.holes)
+    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
+  std::sort(removed.begin(), removed.end());
+  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  SurfaceDistanceOptions hole_options = whole;
+  hole_options.mean.error_bound = options.hole_mean_error_bound_rel_diag * diagonal;
+  hole_options.mean.query_budget = options.hole_mean_query_budget;
+
+  // The patch's mean search against the complete model comes first: the whole model's search
+  // of the repair against the complete model takes the steps it recorded for the cells they
+  // share, the patch's (MeanSearchSteps: the same numbers, computed once).
+  const std::vector<int> patch_faces =
+      removed.empty() ? std::vector<int>{} : new_face_indices(repaired);
+  std::optional<Mesh> patch;
+  std::optional<DirectedMeanDistance> patch_mean;
+  MeanSearchSteps patch_steps;
+  if (!patch_faces.empty()) {
+    patch.emplace(face_subset(repaired, patch_faces));
+    patch_mean = directed_mean_distance(*patch, complete_scene, hole_options.mean, {}, nullptr,
+                                        &patch_steps);
+  }
+  FirstBounds repaired_to_complete = first.repaired_to_complete;
+  repaired_to_complete.steps = &patch_steps;
   const SurfaceDistance d =
       surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
-                       &first.repaired_to_complete, &first.complete_to_repaired);
+                       &repaired_to_complete, &first.complete_to_repaired);
   const DistanceSummary model = d.summary();
   out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);
   out.add(kHausdorffUpperRelDiag, model.hausdorff.upper / diagonal);
@@ -108,16 +132,8 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
 
   // The hole region: the patch against the complete model, and the removed faces of the
   // complete model against the repaired mesh.
-  std::vector<int> removed;
-  for (const auto& hole : c.holes)
-    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
-  std::sort(removed.begin(), removed.end());
-  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
   bool converged = d.converged();
   if (!removed.empty()) {
-    SurfaceDistanceOptions hole_options = whole;
-    hole_options.mean.error_bound = options.hole_mean_error_bound_rel_diag * diagonal;
-    hole_options.mean.query_budget = options.hole_mean_query_budget;
     const Mesh truth = face_subset(c.complete, removed);
     const auto truth_to_repaired_h =
         directed_hausdorff(truth, repaired_scene, hole_options.hausdorff);
@@ -125,11 +141,9 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
         directed_mean_distance(truth, repaired_scene, hole_options.mean);
     DistanceSummary hole = distance_summary(truth_to_repaired_h, truth_to_repaired_m);
     bool hole_converged = truth_to_repaired_h.converged && truth_to_repaired_m.converged;
-    const std::vector<int> patch_faces = new_face_indices(repaired);
-    if (!patch_faces.empty()) {
-      const Mesh patch = face_subset(repaired, patch_faces);
-      const auto h = directed_hausdorff(patch, complete_scene, hole_options.hausdorff);
-      const auto m = directed_mean_distance(patch, complete_scene, hole_options.mean);
+    if (patch) {
+      const auto h = directed_hausdorff(*patch, complete_scene, hole_options.hausdorff);
+      const DirectedMeanDistance& m = *patch_mean;
       hole = max_of(hole, distance_summary(h, m));
       hole_converged = hole_converged && h.converged && m.converged;
     }

@@ -243,6 +243,27 @@ struct MeanCellBounds::Table {
   }
 };
 
+struct MeanSearchSteps::Table {
+  bool recorded = false;  // by a search with these error bounds:
+  double error_bound = 0.0;
+  double relative_error_bound = 0.0;
+  // By cell (each a function of the cell's key and of B alone): its first bounds, its
+  // bounds after tighten(), and its children (each bounded) after split().
+  std::unordered_map<CellKey, Cell, CellKeyHash> bounded;
+  std::unordered_map<CellKey, Cell, CellKeyHash> tightened;
+  std::unordered_map<CellKey, std::vector<Cell>, CellKeyHash> children;
+  bool serves(const MeanDistanceOptions& options) const {
+    return recorded && options.error_bound == error_bound &&
+           options.relative_error_bound == relative_error_bound;
+  }
+};
+
+MeanSearchSteps::MeanSearchSteps() : table_(std::make_unique<Table>()) {}
+MeanSearchSteps::~MeanSearchSteps() = default;
+std::size_t MeanSearchSteps::size() const {
+  return table_->bounded.size() + table_->tightened.size() + table_->children.size();
+}
+
 namespace {
 
 class MeanSearch {
@@ -250,9 +271,23 @@ class MeanSearch {
   MeanSearch(const embree::TriangleScene& scene, const MeanDistanceOptions& options)
       : scene_(scene), options_(options) {}
 
+  // Keeps every cell's first bounds and every refinement step in `steps`, and takes the
+  // steps of `replay` for the cells it has (null: none).
+  void use_steps(MeanSearchSteps::Table* record, const MeanSearchSteps::Table* replay) {
+    if (record) {
+      record->recorded = true;
+      record->error_bound = options_.error_bound;
+      record->relative_error_bound = options_.relative_error_bound;
+      record_ = record;
+    }
+    if (replay && replay->serves(options_))
+      replay_ = replay;
+  }
+
   // The first bounds of `cells` (bound()), in parallel (one query each, no shared state),
   // taken from `first` where it holds the same cell and B is its B0 within the cell's reach.
-  void bound_each(std::vector<Cell>& cells, const FirstBounds* first) const {
+  // Returns how many came from the replayed steps.
+  std::size_t bound_each(std::vector<Cell>& cells, const FirstBounds* first) const {
     std::vector<char> done(cells.size(), 0);
     if (first && first->bounds && first->bounds->table().serves(options_)) {
       const auto& table = first->bounds->table().cells;
@@ -281,6 +316,19 @@ class MeanSearch {
         done[i] = 1;
       }
     }
+    std::size_t replayed = 0;
+    if (replay_) {
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (done[i])
+          continue;
+        const auto it = replay_->bounded.find(key_of(cells[i]));
+        if (it != replay_->bounded.end()) {
+          take_bounds(cells[i], it->second);
+          done[i] = 1;
+          ++replayed;
+        }
+      }
+    }
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256),
                       [&](const auto& range) {
                         for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -288,6 +336,7 @@ class MeanSearch {
                             bound(cells[i]);
                         }
                       });
+    return replayed;
   }
 
   // bound() of each cell, with the box of the balls of B its bounds read (the corners'
@@ -327,7 +376,11 @@ class MeanSearch {
     }
     // The first cells' bounds; queued below in face order, so the result does not depend
     // on the number of threads.
-    bound_each(initial, first_bounds);
+    result_.steps_taken += bound_each(initial, first_bounds);
+    if (record_) {
+      for (const Cell& cell : initial)
+        record_->bounded.emplace(key_of(cell), cell);
+    }
     if (total_area_ <= 0.0)
       return result_;
     // The RMS error is about the mean-square error / (2 RMS): the scale that weighs the
@@ -351,10 +404,10 @@ class MeanSearch {
         [this](Cell& cell) {
           remove_sums(cell);
           if (!cell.planes_tried && near_enough_to_tighten(cell)) {
-            tighten(cell);
+            tighten_or_replay(cell);
             enqueue(std::move(cell));
           } else {
-            split(cell);
+            split_or_replay(cell);
           }
         });
     if (!bound_met)
@@ -700,8 +753,62 @@ class MeanSearch {
     return covered >= area * (1.0 - 1e-9) && covered <= area * (1.0 + 1e-9);
   }
 
-  // The midpoints queried first, then each child with area bounded and queued in turn.
-  void split(const Cell& cell) {
+  // tighten(), or its recorded outcome for the same cell: the same bounds.
+  void tighten_or_replay(Cell& cell) {
+    if (!replay_ && !record_) {
+      tighten(cell);
+      return;
+    }
+    const CellKey key = key_of(cell);
+    if (replay_) {
+      const auto it = replay_->tightened.find(key);
+      if (it != replay_->tightened.end()) {
+        take_bounds(cell, it->second);
+        cell.planes_tried = true;
+        ++result_.steps_taken;
+        return;
+      }
+    }
+    tighten(cell);
+    if (record_)
+      record_->tightened.emplace(key, cell);
+  }
+
+  // split(), or its recorded children for the same cell: the same children, found by the
+  // same three midpoint queries (counted as made).
+  void split_or_replay(const Cell& cell) {
+    if (!replay_ && !record_) {
+      split(cell, nullptr);
+      return;
+    }
+    const CellKey key = key_of(cell);
+    if (replay_) {
+      const auto it = replay_->children.find(key);
+      if (it != replay_->children.end()) {
+        result_.queries += 3;
+        ++result_.steps_taken;
+        for (const Cell& child : it->second)
+          enqueue(child);
+        return;
+      }
+    }
+    std::vector<Cell> children;
+    split(cell, record_ ? &children : nullptr);
+    if (record_)
+      record_->children.emplace(key, std::move(children));
+  }
+
+  static void take_bounds(Cell& cell, const Cell& from) {
+    cell.hi = from.hi;
+    cell.mean_lo = from.mean_lo;
+    cell.mean_hi = from.mean_hi;
+    cell.square_lo = from.square_lo;
+    cell.square_hi = from.square_hi;
+  }
+
+  // The midpoints queried first, then each child with area bounded and queued in turn (and
+  // kept in `children` when given).
+  void split(const Cell& cell, std::vector<Cell>* children) {
     const auto query_midpoint = [this](const Point& p, double bound) { return query(p, bound); };
     for (const TriangleCell& piece : split_at_midpoints(cell, query_midpoint)) {
       Cell child(piece);
@@ -709,12 +816,16 @@ class MeanSearch {
       if (!(child.area > 0.0))
         continue;
       bound(child);
+      if (children)
+        children->push_back(child);
       enqueue(std::move(child));
     }
   }
 
   const embree::TriangleScene& scene_;
   const MeanDistanceOptions& options_;
+  MeanSearchSteps::Table* record_ = nullptr;        // keeps the bounds and steps
+  const MeanSearchSteps::Table* replay_ = nullptr;  // takes the recorded ones
   DirectedMeanDistance result_;
   CellQueue<Cell> queue_;
   double total_area_ = 0.0;
@@ -727,8 +838,12 @@ class MeanSearch {
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
                                             const MeanDistanceOptions& options,
                                             const KnownDistances& known,
-                                            const FirstBounds* first_bounds) {
-  return MeanSearch(b_scene, options).run(a, known, first_bounds);
+                                            const FirstBounds* first_bounds,
+                                            MeanSearchSteps* record) {
+  MeanSearch search(b_scene, options);
+  search.use_steps(record ? &record->table() : nullptr,
+                   first_bounds && first_bounds->steps ? &first_bounds->steps->table() : nullptr);
+  return search.run(a, known, first_bounds);
 }
 
 MeanCellBounds::MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_scene,

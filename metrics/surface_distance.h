@@ -80,10 +80,14 @@ struct DirectedMeanDistance {
   double rms_error = 0.0;  ///< |rms - r(A, B)| <= rms_error
   double area = 0.0;       ///< area of A
   std::size_t queries = 0;
+  /// Cells' first bounds and refinement steps taken from another search (MeanSearchSteps);
+  /// the queries they stand for are counted in `queries` all the same.
+  std::size_t steps_taken = 0;
   bool converged = true;
 };
 
 class MeanCellBounds;
+class MeanSearchSteps;
 
 /// How the B of a search differs from the B0 that a MeanCellBounds was built against.
 struct SurfaceChange {
@@ -107,16 +111,46 @@ struct FirstBounds {
   /// Taken only where B is B0 (`change.b0_face_of_b` null): surface_distance()'s Hausdorff
   /// search of A against B.
   const HausdorffCellBounds* hausdorff = nullptr;
+  /// What another mean search against this same B recorded (MeanSearchSteps), taken by the
+  /// mean search of A for the cells it shares with that search's.
+  const MeanSearchSteps* steps = nullptr;
 };
 
 /// m(A, B) and r(A, B) with `b_scene` an Embree scene of B. A mesh without area gives
 /// zeros with area 0. `first_bounds` (optional): the first pass's bounds of cells of another
 /// mesh against B or a B0 that differs from B only where `first_bounds->change` says: taken
-/// for A's faces with the same cells.
+/// for A's faces with the same cells; and the steps another search against B recorded.
+/// `record` (optional): receives this search's cells' first bounds and refinement steps.
 DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::TriangleScene& b_scene,
                                             const MeanDistanceOptions& options = {},
                                             const KnownDistances& known = {},
-                                            const FirstBounds* first_bounds = nullptr);
+                                            const FirstBounds* first_bounds = nullptr,
+                                            MeanSearchSteps* record = nullptr);
+
+/// What a mean search computed for its cells against its B: each cell's first bounds, its
+/// bounds once its plane bounds were tried, and its four children (the midpoints queried,
+/// each child bounded). Each is a function of the cell (its corners, their distances and
+/// nearest faces: CellKey) and of B only, so another search against the same B with the same
+/// error bounds takes them for every cell with the same key instead of computing them,
+/// counts the queries they would have made, and gives the same result, bit for bit. In a
+/// job's evaluation the hole region's search of the patch against the complete model records
+/// them, and the whole model's search of the repair against the complete model, whose new
+/// faces are the patch's, takes them (evaluation.cpp).
+class MeanSearchSteps {
+ public:
+  MeanSearchSteps();
+  ~MeanSearchSteps();
+  MeanSearchSteps(const MeanSearchSteps&) = delete;
+  MeanSearchSteps& operator=(const MeanSearchSteps&) = delete;
+  std::size_t size() const;  ///< cells and steps held
+
+  struct Table;  ///< surface_distance.cpp
+  const Table& table() const { return *table_; }
+  Table& table() { return *table_; }
+
+ private:
+  std::unique_ptr<Table> table_;
+};
 
 /// The mean search's first-pass bounds of the faces of a mesh A0 against a surface B0: each
 /// face's cell (its corners in the face's order, their distances to B0 and nearest faces of

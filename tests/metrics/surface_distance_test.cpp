@@ -7,6 +7,7 @@
 #include "generators/box_solid.h"
 #include "generators/case_catalog.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/face_subset.h"
 #include "tests/test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -251,6 +252,54 @@ TEST(MeanDistance, AffineDistanceIsExactFromThePlaneBounds) {
   EXPECT_NEAR(d.mean, 0.25, 1e-12);
   EXPECT_NEAR(d.rms, std::sqrt(0.07), 1e-12);
   EXPECT_LT(d.queries, 100u);
+}
+
+}  // namespace
+}  // namespace holebench
+
+namespace holebench {
+namespace {
+
+// The steps one search recorded (MeanSearchSteps), taken by another search against the same
+// surface for the cells the two share: the same numbers and the same count of queries as
+// computing them, and steps recorded with other error bounds are not taken. Here the removed
+// faces of a real case against its input record, and the whole complete model, which holds
+// them, takes their steps.
+TEST(MeanDistance, StepsRecordedByAnotherSearchGiveTheSameNumbers) {
+  const Case c =
+      generators::make_case("brep/k3/outer/convex-convex-convex/outer-outer-outer/small", 0, 5.0);
+  const embree::TriangleScene input_scene(c.input);
+  const double diagonal = bounding_box_diagonal(c.complete);
+  MeanDistanceOptions options;
+  options.error_bound = 1e-5 * diagonal;
+  std::vector<int> removed;
+  for (const auto& hole : c.holes)
+    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
+  std::sort(removed.begin(), removed.end());
+  const Mesh part = face_subset(c.complete, removed);
+
+  const DirectedMeanDistance computed = directed_mean_distance(c.complete, input_scene, options);
+  MeanSearchSteps steps;
+  directed_mean_distance(part, input_scene, options, {}, nullptr, &steps);
+  ASSERT_GT(steps.size(), 0u);
+  FirstBounds first;
+  first.steps = &steps;
+  const DirectedMeanDistance taken =
+      directed_mean_distance(c.complete, input_scene, options, {}, &first);
+  EXPECT_EQ(computed.steps_taken, 0u);
+  EXPECT_GT(taken.steps_taken, 0u);
+  EXPECT_EQ(taken.mean, computed.mean);
+  EXPECT_EQ(taken.mean_lower, computed.mean_lower);
+  EXPECT_EQ(taken.mean_upper, computed.mean_upper);
+  EXPECT_EQ(taken.rms, computed.rms);
+  EXPECT_EQ(taken.rms_lower, computed.rms_lower);
+  EXPECT_EQ(taken.rms_upper, computed.rms_upper);
+  EXPECT_EQ(taken.queries, computed.queries);
+  EXPECT_EQ(taken.converged, computed.converged);
+
+  MeanDistanceOptions other = options;
+  other.error_bound = 2e-5 * diagonal;
+  EXPECT_EQ(directed_mean_distance(c.complete, input_scene, other, {}, &first).steps_taken, 0u);
 }
 
 }  // namespace
