@@ -91,34 +91,102 @@ SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
   return first;
 }
 
+// The faces of the complete model removed to make the case's holes, each once, in order.
+std::vector<int> removed_faces(const Case& c) {
+  std::vector<int> removed;
+  for (const auto& hole : c.holes)
+    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
+  std::sort(removed.begin(), removed.end());
+  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  return removed;
+}
+
+// The hole region's searches: the whole model's, with the hole's own mean error bound and
+// query budget.
+SurfaceDistanceOptions hole_region_options(const EvaluationOptions& options,
+                                           const SurfaceDistanceOptions& whole, double diagonal) {
+  SurfaceDistanceOptions hole = whole;
+  hole.mean.error_bound = options.hole_mean_error_bound_rel_diag * diagonal;
+  hole.mean.query_budget = options.hole_mean_query_budget;
+  return hole;
+}
+
+// The patch (the repair's new faces, where the case has holes) and its mean distance to the
+// complete model; the search records its steps in `steps` for the whole model's search.
+struct PatchMean {
+  std::optional<Mesh> patch;
+  std::optional<DirectedMeanDistance> mean;
+};
+PatchMean patch_mean(const Mesh& repaired, bool case_has_holes,
+                     const embree::TriangleScene& complete_scene,
+                     const MeanDistanceOptions& options, MeanSearchSteps& steps) {
+  PatchMean result;
+  const std::vector<int> patch_faces =
+      case_has_holes ? new_face_indices(repaired) : std::vector<int>{};
+  if (patch_faces.empty())
+    return result;
+  result.patch.emplace(face_subset(repaired, patch_faces));
+  result.mean = directed_mean_distance(*result.patch, complete_scene, options, {}, nullptr, &steps);
+  return result;
+}
+
+// The hole region: the removed faces of the complete model against the repaired mesh, and
+// the patch against the complete model (the larger of the two directions).
+struct HoleRegionDistance {
+  DistanceSummary summary;
+  bool converged = true;
+};
+HoleRegionDistance hole_region_distance(const Case& c, const std::vector<int>& removed,
+                                        const PatchMean& patch,
+                                        const embree::TriangleScene& complete_scene,
+                                        const embree::TriangleScene& repaired_scene,
+                                        const SurfaceDistanceOptions& options) {
+  const Mesh truth = face_subset(c.complete, removed);
+  const auto truth_to_repaired_h = directed_hausdorff(truth, repaired_scene, options.hausdorff);
+  const auto truth_to_repaired_m = directed_mean_distance(truth, repaired_scene, options.mean);
+  HoleRegionDistance hole;
+  hole.summary = distance_summary(truth_to_repaired_h, truth_to_repaired_m);
+  hole.converged = truth_to_repaired_h.converged && truth_to_repaired_m.converged;
+  if (patch.patch) {
+    const auto h = directed_hausdorff(*patch.patch, complete_scene, options.hausdorff);
+    const DirectedMeanDistance& m = *patch.mean;
+    hole.summary = max_of(hole.summary, distance_summary(h, m));
+    hole.converged = hole.converged && h.converged && m.converged;
+  }
+  return hole;
+}
+
+// The slice paper's Table 2 error: the mean distance of the new vertices from the complete
+// model (exact closest points).
+void add_new_vertex_error(const Mesh& repaired, const embree::TriangleScene& complete_scene,
+                          double diagonal, Recorder& out) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (auto v : repaired.vertices()) {
+    if (!is_new(repaired, v))
+      continue;
+    sum += complete_scene.closest_point(repaired.point(v)).distance;
+    ++count;
+  }
+  if (count > 0)
+    out.add(kNewVertexMeanErrorRelDiag, sum / count / diagonal);
+}
+
 void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                    double diagonal, const embree::TriangleScene& complete_scene,
                    const embree::TriangleScene& repaired_scene, const SharedFirstBounds& first,
                    Recorder& out) {
   const Mesh& repaired = result.repaired;
   const SurfaceDistanceOptions whole = whole_model_distance_options(options, diagonal);
-  std::vector<int> removed;
-  for (const auto& hole : c.holes)
-    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
-  std::sort(removed.begin(), removed.end());
-  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
-  SurfaceDistanceOptions hole_options = whole;
-  hole_options.mean.error_bound = options.hole_mean_error_bound_rel_diag * diagonal;
-  hole_options.mean.query_budget = options.hole_mean_query_budget;
+  const SurfaceDistanceOptions hole_options = hole_region_options(options, whole, diagonal);
+  const std::vector<int> removed = removed_faces(c);
 
   // The patch's mean search against the complete model comes first: the whole model's search
   // of the repair against the complete model takes the steps it recorded for the cells they
   // share, the patch's (MeanSearchSteps: the same numbers, computed once).
-  const std::vector<int> patch_faces =
-      removed.empty() ? std::vector<int>{} : new_face_indices(repaired);
-  std::optional<Mesh> patch;
-  std::optional<DirectedMeanDistance> patch_mean;
   MeanSearchSteps patch_steps;
-  if (!patch_faces.empty()) {
-    patch.emplace(face_subset(repaired, patch_faces));
-    patch_mean = directed_mean_distance(*patch, complete_scene, hole_options.mean, {}, nullptr,
-                                        &patch_steps);
-  }
+  const PatchMean patch =
+      patch_mean(repaired, !removed.empty(), complete_scene, hole_options.mean, patch_steps);
   FirstBounds repaired_to_complete = first.repaired_to_complete;
   repaired_to_complete.steps = &patch_steps;
   const SurfaceDistance d =
@@ -130,44 +198,19 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   add_interval(out, kMeanDistance, model.mean, diagonal);
   add_interval(out, kRmsDistance, model.rms, diagonal);
 
-  // The hole region: the patch against the complete model, and the removed faces of the
-  // complete model against the repaired mesh.
   bool converged = d.converged();
   if (!removed.empty()) {
-    const Mesh truth = face_subset(c.complete, removed);
-    const auto truth_to_repaired_h =
-        directed_hausdorff(truth, repaired_scene, hole_options.hausdorff);
-    const auto truth_to_repaired_m =
-        directed_mean_distance(truth, repaired_scene, hole_options.mean);
-    DistanceSummary hole = distance_summary(truth_to_repaired_h, truth_to_repaired_m);
-    bool hole_converged = truth_to_repaired_h.converged && truth_to_repaired_m.converged;
-    if (patch) {
-      const auto h = directed_hausdorff(*patch, complete_scene, hole_options.hausdorff);
-      const DirectedMeanDistance& m = *patch_mean;
-      hole = max_of(hole, distance_summary(h, m));
-      hole_converged = hole_converged && h.converged && m.converged;
-    }
-    converged = converged && hole_converged;
-    out.add_flag(kHoleDistanceConvergedOk, hole_converged);
-    out.add(kHoleHausdorffRelDiag, hole.hausdorff.lower / diagonal);
-    out.add(kHoleHausdorffUpperRelDiag, hole.hausdorff.upper / diagonal);
-    add_interval(out, kHoleMeanDistance, hole.mean, diagonal);
-    add_interval(out, kHoleRmsDistance, hole.rms, diagonal);
+    const HoleRegionDistance hole =
+        hole_region_distance(c, removed, patch, complete_scene, repaired_scene, hole_options);
+    converged = converged && hole.converged;
+    out.add_flag(kHoleDistanceConvergedOk, hole.converged);
+    out.add(kHoleHausdorffRelDiag, hole.summary.hausdorff.lower / diagonal);
+    out.add(kHoleHausdorffUpperRelDiag, hole.summary.hausdorff.upper / diagonal);
+    add_interval(out, kHoleMeanDistance, hole.summary.mean, diagonal);
+    add_interval(out, kHoleRmsDistance, hole.summary.rms, diagonal);
   }
   out.add_flag(kDistanceConvergedOk, converged);
-
-  // The slice paper's Table 2 error: the mean distance of the new vertices from the
-  // complete model (exact closest points).
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (auto v : repaired.vertices()) {
-    if (!is_new(repaired, v))
-      continue;
-    sum += complete_scene.closest_point(repaired.point(v)).distance;
-    ++count;
-  }
-  if (count > 0)
-    out.add(kNewVertexMeanErrorRelDiag, sum / count / diagonal);
+  add_new_vertex_error(repaired, complete_scene, diagonal, out);
 }
 
 void add_feature_recovery(const Case& c, const MethodResult& result,

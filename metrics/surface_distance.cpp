@@ -187,16 +187,24 @@ Polygon2 clip_to_triangle(Polygon2 subject, std::array<Point2, 3> t) {
   return subject;
 }
 
-// A (sub)triangle of A with bounds on the mean of d(x, B) and of d(x, B)^2 over it. Its
-// priority in the queue is its share of the errors: the largest is refined first.
-struct Cell : TriangleCell {
-  Cell() = default;
-  explicit Cell(const TriangleCell& cell) : TriangleCell(cell) {}
-  double area = 0.0;
+// What MeanSearch::bound() and tighten() give a cell: bounds on d(x, B) over it, and on its
+// means of d and of d^2.
+struct MeanBounds {
   double hi = 0.0;                          // pointwise: d <= hi on the cell
   double mean_lo = 0.0, mean_hi = 0.0;      // bounds of the cell's mean of d
   double square_lo = 0.0, square_hi = 0.0;  // bounds of the cell's mean of d^2
-  bool planes_tried = false;                // the plane bounds (tighten()) are in
+};
+
+// A (sub)triangle of A with bounds on the mean of d(x, B) and of d(x, B)^2 over it. Its
+// priority in the queue is its share of the errors: the largest is refined first.
+struct Cell : TriangleCell, MeanBounds {
+  Cell() = default;
+  explicit Cell(const TriangleCell& cell) : TriangleCell(cell) {}
+  // Bounds computed for the same cell elsewhere (a table, or another search's steps).
+  void take_bounds(const MeanBounds& from) { static_cast<MeanBounds&>(*this) = from; }
+  const MeanBounds& bounds() const { return *this; }
+  double area = 0.0;
+  bool planes_tried = false;  // the plane bounds (tighten()) are in
 };
 
 // The errors of the estimates from the sums of area-weighted bound widths.
@@ -219,9 +227,9 @@ Estimate estimate(double area, double sum_mean, double sum_mean_width, double su
   return e;
 }
 
-// What MeanSearch::bound() gives a cell.
+// What MeanSearch::bound() gives a cell, with where it read B0.
 struct CellBounds {
-  double hi = 0.0, mean_lo = 0.0, mean_hi = 0.0, square_lo = 0.0, square_hi = 0.0;
+  MeanBounds bounds;
   GrowingBox reach;  // the balls of B0 the bounds read: valid where B is B0 in this box
 };
 
@@ -307,12 +315,7 @@ class MeanSearch {
         const auto it = table.find(key_of(as_b0));
         if (it == table.end() || it->second.reach.meets(first->change.changed))
           continue;
-        Cell& cell = cells[i];
-        cell.hi = it->second.hi;
-        cell.mean_lo = it->second.mean_lo;
-        cell.mean_hi = it->second.mean_hi;
-        cell.square_lo = it->second.square_lo;
-        cell.square_hi = it->second.square_hi;
+        cells[i].take_bounds(it->second.bounds);
         done[i] = 1;
       }
     }
@@ -323,7 +326,7 @@ class MeanSearch {
           continue;
         const auto it = replay_->bounded.find(key_of(cells[i]));
         if (it != replay_->bounded.end()) {
-          take_bounds(cells[i], it->second);
+          cells[i].take_bounds(it->second);
           done[i] = 1;
           ++replayed;
         }
@@ -763,7 +766,7 @@ class MeanSearch {
     if (replay_) {
       const auto it = replay_->tightened.find(key);
       if (it != replay_->tightened.end()) {
-        take_bounds(cell, it->second);
+        cell.take_bounds(it->second);
         cell.planes_tried = true;
         ++result_.steps_taken;
         return;
@@ -796,14 +799,6 @@ class MeanSearch {
     split(cell, record_ ? &children : nullptr);
     if (record_)
       record_->children.emplace(key, std::move(children));
-  }
-
-  static void take_bounds(Cell& cell, const Cell& from) {
-    cell.hi = from.hi;
-    cell.mean_lo = from.mean_lo;
-    cell.mean_hi = from.mean_hi;
-    cell.square_lo = from.square_lo;
-    cell.square_hi = from.square_hi;
   }
 
   // The midpoints queried first, then each child with area bounded and queued in turn (and
@@ -880,8 +875,7 @@ MeanCellBounds::MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_s
   table_->cells.reserve(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const Cell& cell = cells[i];
-    table_->cells.emplace(key_of(cell), CellBounds{cell.hi, cell.mean_lo, cell.mean_hi,
-                                                   cell.square_lo, cell.square_hi, reach[i]});
+    table_->cells.emplace(key_of(cell), CellBounds{cell.bounds(), reach[i]});
   }
 }
 

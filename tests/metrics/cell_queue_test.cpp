@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace holebench {
@@ -78,6 +79,50 @@ TEST(CellQueue, StampsCreationOrderFromTheFirstCellsOn) {
     queue.pop();
   }
   EXPECT_EQ(orders, (std::vector<std::size_t>{0, 1, 2}));
+}
+
+// Pushes and pops interleaved, with many equal priorities, pop the cells in the order of a
+// sort by priority, then creation.
+TEST(CellQueue, InterleavedPushesAndPopsPopInPriorityThenCreationOrder) {
+  CellQueue<NamedCell> queue;
+  std::vector<NamedCell> first;
+  for (int name = 0; name < 20; ++name)
+    first.push_back(named(name, (name * 7) % 5));
+  queue.start(first);
+  // The reference: every queued cell with its creation order; the next to pop is the
+  // largest by LargerPriorityFirst.
+  std::vector<NamedCell> queued = first;
+  for (std::size_t i = 0; i < queued.size(); ++i)
+    queued[i].order = i;
+  std::size_t next_order = queued.size();
+  std::vector<int> popped, expected;
+  int next_name = 20;
+  for (int round = 0; round < 200; ++round) {
+    if (round % 3 != 2) {
+      NamedCell cell = named(next_name++, (round * 11) % 4);
+      queue.push(cell);
+      cell.order = next_order++;
+      queued.push_back(cell);
+    } else {
+      for (int k = 0; k < 2 && !queue.empty(); ++k) {
+        const auto largest = std::max_element(queued.begin(), queued.end(), LargerPriorityFirst{});
+        expected.push_back(largest->name);
+        queued.erase(largest);
+        popped.push_back(queue.top().name);
+        queue.pop();
+      }
+    }
+  }
+  while (!queue.empty()) {
+    const auto largest = std::max_element(queued.begin(), queued.end(), LargerPriorityFirst{});
+    expected.push_back(largest->name);
+    queued.erase(largest);
+    popped.push_back(queue.top().name);
+    queue.pop();
+  }
+  EXPECT_TRUE(queued.empty());
+  EXPECT_EQ(popped.size(), 20u + 134u);
+  EXPECT_EQ(popped, expected);
 }
 
 // A toy search: each refined cell is replaced by two of half its priority, until the top
