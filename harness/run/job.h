@@ -84,8 +84,9 @@ struct JobRecord {
   double method_seconds = 0.0;
   /// Wall time of each run of the method (JobOptions::method_repetitions; one by default).
   std::vector<double> method_run_seconds;
-  /// Wall time of the job's stages: "case" (generation), "method", "evaluation", "snapshot",
-  /// "layers".
+  /// Wall time of the job's stages: "heap_warmup" (a job forked from its group's process
+  /// copying the heap pages it will write, before the job starts: process_pool.h), "case"
+  /// (generation), "method", "evaluation", "snapshot", "layers".
   std::vector<PhaseTiming> stages;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
 

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <map>
 #include <new>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -176,7 +177,8 @@ Child start_child_process(const std::function<void(int fd)>& body,
 }
 
 // Runs one job in the calling (child) process and writes its record as a line to `fd`.
-void run_job_and_send(const Job& job, const JobFunction& run_one, int fd) {
+void run_job_and_send(const Job& job, const JobFunction& run_one, int fd,
+                      std::optional<double> heap_warmup_seconds = std::nullopt) {
   JobRecord record;
   try {
     record = run_one(job);
@@ -191,6 +193,8 @@ void run_job_and_send(const Job& job, const JobFunction& run_one, int fd) {
     record.status = JobStatus::Error;
     record.message = "uncaught exception of unknown type";
   }
+  if (heap_warmup_seconds)
+    record.stages.insert(record.stages.begin(), {"heap_warmup", *heap_warmup_seconds});
   write_all(fd, record_to_json_line(record) + "\n");
 }
 
@@ -311,8 +315,12 @@ constexpr const char* kPreparedLine = "prepared";
   for (const Job& job : group) {
     Child child = start_child_process(
         [&job, &run_one, &options](int job_fd) {
+          const auto warmup_start = Clock::now();
           copy_inherited_heap_pages(options.job_heap_warmup_bytes);
-          run_job_and_send(job, run_one, job_fd);
+          run_job_and_send(job, run_one, job_fd,
+                           options.job_heap_warmup_bytes > 0
+                               ? std::optional<double>(seconds_since(warmup_start))
+                               : std::nullopt);
         },
         options.memory_limit_bytes);
     const int status = wait_for_child(child, options.timeout_seconds);

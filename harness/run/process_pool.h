@@ -53,6 +53,7 @@ struct ProcessPoolOptions {
   /// write copies a page; a job that made its own case paid that while making it. Without
   /// this, the method's time would carry it (the fandisk's median liepa_cgal time 15 ms
   /// became 48 ms); 16 MiB brings it back (docs/reliability.md, "Jobs grouped by case").
+  /// Its time is the record's `heap_warmup` stage.
   std::size_t job_heap_warmup_bytes = 16u << 20;
 };
 

@@ -1,5 +1,7 @@
 #include "harness/run/process_pool.h"
 
+#include "tests/harness/record_lookup.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -156,6 +158,32 @@ TEST(ProcessPool, GroupsPrepareTheirCaseOnceAndGiveTheSameRecords) {
     EXPECT_EQ(grouped.records[i].metrics[0].value, static_cast<double>(jobs[i].method_id.size()));
   }
   EXPECT_EQ(read_records_jsonl(path).size(), jobs.size());
+}
+
+// A job forked from its group's process records the time of its heap warm-up as the stage
+// `heap_warmup` (the stages add up to the job's work); without a warm-up there is none.
+TEST(ProcessPool, AGroupedJobRecordsItsHeapWarmUpAsAStage) {
+  const auto jobs = grouped_jobs({{"p", "a"}, {"p", "bb"}, {"q", "ccc"}});
+  ProcessPoolOptions options;
+  options.progress = false;
+  options.workers = 2;
+  const auto has_warmup = [](const JobRecord& record) {
+    return std::any_of(record.stages.begin(), record.stages.end(),
+                       [](const PhaseTiming& stage) { return stage.phase == "heap_warmup"; });
+  };
+  const auto warmed = run_grouped(jobs, by_case, counting_preparation(fresh_file("w.txt")),
+                                  fresh_file("warmed.jsonl"), options);
+  ASSERT_EQ(warmed.records.size(), jobs.size());
+  for (const auto& record : warmed.records) {
+    EXPECT_TRUE(has_warmup(record)) << record.job.id();
+    EXPECT_GT(test_support::stage(record, "heap_warmup"), 0.0) << record.job.id();
+  }
+  options.job_heap_warmup_bytes = 0;
+  const auto cold = run_grouped(jobs, by_case, counting_preparation(fresh_file("c.txt")),
+                                fresh_file("cold.jsonl"), options);
+  ASSERT_EQ(cold.records.size(), jobs.size());
+  for (const auto& record : cold.records)
+    EXPECT_FALSE(has_warmup(record)) << record.job.id();
 }
 
 // Each job of a group is still a process of its own: a crash, a hang or an escape is that
