@@ -176,7 +176,8 @@ Child start_child_process(const std::function<void(int fd)>& body,
   return child;
 }
 
-// Runs one job in the calling (child) process and writes its record as a line to `fd`.
+// Runs one job in the calling (child) process and writes its record as a line to `fd`, with
+// the time of the heap warm-up before it (when there was one) as its first stage.
 void run_job_and_send(const Job& job, const JobFunction& run_one, int fd,
                       std::optional<double> heap_warmup_seconds = std::nullopt) {
   JobRecord record;
