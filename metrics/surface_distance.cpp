@@ -227,6 +227,20 @@ Estimate estimate(double area, double sum_mean, double sum_mean_width, double su
   return e;
 }
 
+// The error bounds a search ran under: a cell's bounds and steps computed under them are the
+// ones another search takes only when it runs under the same.
+struct SearchErrorBounds {
+  double error_bound = 0.0;
+  double relative_error_bound = 0.0;
+  static SearchErrorBounds of(const MeanDistanceOptions& options) {
+    return {options.error_bound, options.relative_error_bound};
+  }
+  bool serve(const MeanDistanceOptions& options) const {
+    return options.error_bound == error_bound &&
+           options.relative_error_bound == relative_error_bound;
+  }
+};
+
 // What MeanSearch::bound() gives a cell, with where it read B0.
 struct CellBounds {
   MeanBounds bounds;
@@ -236,8 +250,7 @@ struct CellBounds {
 }  // namespace
 
 struct MeanCellBounds::Table {
-  double error_bound = 0.0;
-  double relative_error_bound = 0.0;
+  SearchErrorBounds error_bounds;
   std::unordered_map<CellKey, CellBounds, CellKeyHash> cells;
   // The first pass over A0's vertices: each vertex's point and answer, and whether the
   // answer came from a query (not from lying on a face shared with B0).
@@ -245,24 +258,19 @@ struct MeanCellBounds::Table {
   VertexDistances vertices;
   std::vector<char> vertex_queried;
   // Whether a search with `options` bounds a cell as these were bounded.
-  bool serves(const MeanDistanceOptions& options) const {
-    return options.error_bound == error_bound &&
-           options.relative_error_bound == relative_error_bound;
-  }
+  bool serves(const MeanDistanceOptions& options) const { return error_bounds.serve(options); }
 };
 
 struct MeanSearchSteps::Table {
   bool recorded = false;  // by a search with these error bounds:
-  double error_bound = 0.0;
-  double relative_error_bound = 0.0;
+  SearchErrorBounds error_bounds;
   // By cell (each a function of the cell's key and of B alone): its first bounds, its
   // bounds after tighten(), and its children (each bounded) after split().
-  std::unordered_map<CellKey, Cell, CellKeyHash> bounded;
-  std::unordered_map<CellKey, Cell, CellKeyHash> tightened;
+  std::unordered_map<CellKey, MeanBounds, CellKeyHash> bounded;
+  std::unordered_map<CellKey, MeanBounds, CellKeyHash> tightened;
   std::unordered_map<CellKey, std::vector<Cell>, CellKeyHash> children;
   bool serves(const MeanDistanceOptions& options) const {
-    return recorded && options.error_bound == error_bound &&
-           options.relative_error_bound == relative_error_bound;
+    return recorded && error_bounds.serve(options);
   }
 };
 
@@ -284,8 +292,7 @@ class MeanSearch {
   void use_steps(MeanSearchSteps::Table* record, const MeanSearchSteps::Table* replay) {
     if (record) {
       record->recorded = true;
-      record->error_bound = options_.error_bound;
-      record->relative_error_bound = options_.relative_error_bound;
+      record->error_bounds = SearchErrorBounds::of(options_);
       record_ = record;
     }
     if (replay && replay->serves(options_))
@@ -382,7 +389,7 @@ class MeanSearch {
     result_.steps_taken += bound_each(initial, first_bounds);
     if (record_) {
       for (const Cell& cell : initial)
-        record_->bounded.emplace(key_of(cell), cell);
+        record_->bounded.emplace(key_of(cell), cell.bounds());
     }
     if (total_area_ <= 0.0)
       return result_;
@@ -774,7 +781,7 @@ class MeanSearch {
     }
     tighten(cell);
     if (record_)
-      record_->tightened.emplace(key, cell);
+      record_->tightened.emplace(key, cell.bounds());
   }
 
   // split(), or its recorded children for the same cell: the same children, found by the
@@ -844,8 +851,7 @@ DirectedMeanDistance directed_mean_distance(const Mesh& a, const embree::Triangl
 MeanCellBounds::MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_scene,
                                const FirstPass& first_pass, const MeanDistanceOptions& options)
     : table_(std::make_unique<Table>()) {
-  table_->error_bound = options.error_bound;
-  table_->relative_error_bound = options.relative_error_bound;
+  table_->error_bounds = SearchErrorBounds::of(options);
   // The cells as the search makes them: the same first pass over the vertices, the faces
   // lying on B0 left out (the search skips them).
   const std::vector<int>& b0_face_of_a0 = first_pass.b_face_of_a;
