@@ -3,6 +3,7 @@
 #include "metrics/case_evaluation.h"
 
 #include "core/geometry.h"
+#include "core/stopwatch.h"
 #include "metrics/classification_accuracy.h"
 #include "metrics/embree/arrow_visibility.h"
 #include "metrics/embree/triangle_scene.h"
@@ -54,6 +55,22 @@ class Recorder {
 
  private:
   std::vector<MetricValue>& values_;
+};
+
+// The evaluation's phases: each lap is the wall time since the one before (or the start).
+class PhaseLaps {
+ public:
+  explicit PhaseLaps(std::vector<PhaseTiming>& phases)
+      : phases_(phases), start_(SteadyClock::now()) {}
+  void lap(const char* phase) {
+    const auto now = SteadyClock::now();
+    phases_.push_back({phase, std::chrono::duration<double>(now - start_).count()});
+    start_ = now;
+  }
+
+ private:
+  std::vector<PhaseTiming>& phases_;
+  SteadyClock::time_point start_;
 };
 
 double fraction(std::size_t part, std::size_t whole) {
@@ -175,7 +192,7 @@ void add_new_vertex_error(const Mesh& repaired, const embree::TriangleScene& com
 void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                    double diagonal, const embree::TriangleScene& complete_scene,
                    const embree::TriangleScene& repaired_scene, const SharedFirstBounds& first,
-                   Recorder& out) {
+                   Recorder& out, PhaseLaps& laps) {
   const Mesh& repaired = result.repaired;
   const SurfaceDistanceOptions whole = whole_model_distance_options(options, diagonal);
   const SurfaceDistanceOptions hole_options = hole_region_options(options, whole, diagonal);
@@ -187,11 +204,13 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   MeanSearchSteps patch_steps;
   const PatchMean patch =
       patch_mean(repaired, !removed.empty(), complete_scene, hole_options.mean, patch_steps);
+  laps.lap(evaluation_phases::kPatchMean);
   FirstBounds repaired_to_complete = first.repaired_to_complete;
   repaired_to_complete.steps = &patch_steps;
   const SurfaceDistance d =
       surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
                        &repaired_to_complete, &first.complete_to_repaired);
+  laps.lap(evaluation_phases::kWholeModelDistances);
   const DistanceSummary model = d.summary();
   out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);
   out.add(kHausdorffUpperRelDiag, model.hausdorff.upper / diagonal);
@@ -208,9 +227,11 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
     out.add(kHoleHausdorffUpperRelDiag, hole.summary.hausdorff.upper / diagonal);
     add_interval(out, kHoleMeanDistance, hole.summary.mean, diagonal);
     add_interval(out, kHoleRmsDistance, hole.summary.rms, diagonal);
+    laps.lap(evaluation_phases::kHoleRegionDistances);
   }
   out.add_flag(kDistanceConvergedOk, converged);
   add_new_vertex_error(repaired, complete_scene, diagonal, out);
+  laps.lap(evaluation_phases::kNewVertexError);
 }
 
 void add_feature_recovery(const Case& c, const MethodResult& result,
@@ -355,29 +376,40 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
   const embree::TriangleScene* shared_complete_scene = shared ? shared->complete_scene() : nullptr;
   Evaluation evaluation;
   Recorder out(evaluation.values);
+  PhaseLaps laps(evaluation.phases);
   const double diagonal = bounding_box_diagonal(c.complete);
   if (!(diagonal > 0.0) || c.complete.n_faces() == 0)
     return evaluation;  // no ground truth to measure against
   std::unique_ptr<embree::TriangleScene> own_complete_scene;
-  if (!shared_complete_scene)
+  if (!shared_complete_scene) {
     own_complete_scene = std::make_unique<embree::TriangleScene>(c.complete);
+    laps.lap(evaluation_phases::kCompleteScene);
+  }
   const embree::TriangleScene& complete_scene =
       shared_complete_scene ? *shared_complete_scene : *own_complete_scene;
   // The input's faces the repair kept, where the case's jobs share what is known of them.
   std::optional<KeptFaces> kept;
-  if (shared)
+  SharedFirstBounds first;
+  if (shared) {
     kept = kept_faces(c.input, result.repaired);
+    first = shared_first_bounds(c, result, shared, &*kept);
+    laps.lap(evaluation_phases::kKeptFaces);
+  }
   if (result.repaired.n_faces() > 0) {
     const embree::TriangleScene repaired_scene(result.repaired);
-    add_distances(c, result, options, diagonal, complete_scene, repaired_scene,
-                  shared_first_bounds(c, result, shared, kept ? &*kept : nullptr), out);
+    laps.lap(evaluation_phases::kRepairedScene);
+    add_distances(c, result, options, diagonal, complete_scene, repaired_scene, first, out, laps);
     add_feature_recovery(c, result, options, diagonal, complete_scene, out);
+    laps.lap(evaluation_phases::kFeatureRecovery);
   }
   add_validity(c, result, options, diagonal, shared ? shared->input_self_intersections() : nullptr,
                kept ? &*kept : nullptr, out);
+  laps.lap(evaluation_phases::kValidity);
   add_classification(c, result, out);
+  laps.lap(evaluation_phases::kClassification);
   add_arrows(c, result, options, diagonal, complete_scene, out);
-  add_fallbacks(result, out);
+  laps.lap(evaluation_phases::kArrowVisibility);
+  add_fallbacks(result, out);  // a count of the hole reports: no time worth a phase
   return evaluation;
 }
 

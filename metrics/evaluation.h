@@ -57,8 +57,29 @@ struct EvaluationOptions {
   int arrow_search_directions = 4096;
 };
 
+/// The evaluation's own steps, whose wall times Evaluation::phases gives (in this order,
+/// each where it ran): the records' `evaluation_phases_s` (docs/results.md), so that a run
+/// shows where its evaluation time goes.
+namespace evaluation_phases {
+constexpr const char* kCompleteScene = "complete_scene";  ///< where no shared one is given
+/// The input's faces the repair kept, and where it changed the input.
+constexpr const char* kKeptFaces = "kept_faces";
+constexpr const char* kRepairedScene = "repaired_scene";
+/// The patch's mean distance to the complete model (hole region and whole model).
+constexpr const char* kPatchMean = "patch_mean_distance";
+constexpr const char* kWholeModelDistances = "whole_model_distances";
+constexpr const char* kHoleRegionDistances = "hole_region_distances";
+constexpr const char* kNewVertexError = "new_vertex_error";
+constexpr const char* kFeatureRecovery = "feature_recovery";
+constexpr const char* kValidity = "validity";
+constexpr const char* kClassification = "classification";
+constexpr const char* kArrowVisibility = "arrow_visibility";
+}  // namespace evaluation_phases
+
 struct Evaluation {
   std::vector<MetricValue> values;
+  /// Wall time of each of the evaluation's steps (evaluation_phases), in the order they ran.
+  std::vector<PhaseTiming> phases;
   const MetricValue* find(const std::string& name) const;
 };
 

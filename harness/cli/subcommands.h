@@ -29,5 +29,6 @@ Subcommand add_validate_command(CLI::App& app);  ///< validate: results files' i
 Subcommand add_figures_command(CLI::App& app);   ///< figures: the papers' figures and tables
 Subcommand add_history_command(CLI::App& app);   ///< history: trends across runs
 Subcommand add_report_command(CLI::App& app);    ///< report: tables, plots, report.html
+Subcommand add_timing_command(CLI::App& app);    ///< timing: worker time by stage and step
 
 }  // namespace holebench::harness::cli

@@ -250,6 +250,12 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
   for (const auto& stage : record.stages)
     stages[stage.phase] = stage.seconds;
   j["stages_s"] = stages;
+  if (!record.evaluation_phases.empty()) {
+    nlohmann::ordered_json evaluation_phases = nlohmann::ordered_json::object();
+    for (const auto& phase : record.evaluation_phases)
+      evaluation_phases[phase.phase] = phase.seconds;
+    j["evaluation_phases_s"] = evaluation_phases;
+  }
   nlohmann::ordered_json holes = nlohmann::ordered_json::array();
   for (const auto& hole : record.holes) {
     nlohmann::ordered_json h = {{"hole_index", hole.hole_index},
@@ -329,6 +335,7 @@ JobRecord record_from_json(const nlohmann::json& j) {
     record.method_run_seconds.push_back(record.method_seconds);
   }
   record.stages = timings_from(j, "stages_s");
+  record.evaluation_phases = timings_from(j, "evaluation_phases_s");
   if (j.contains("holes") && j["holes"].is_array()) {
     for (std::size_t i = 0; i < j["holes"].size(); ++i)
       record.holes.push_back(hole_from_json(j["holes"][i], "holes[" + std::to_string(i) + "]"));

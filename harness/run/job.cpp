@@ -30,6 +30,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The evaluation phase of a group's first job that is the case's shared evaluation work
+// (JobRecord::evaluation_phases).
+constexpr const char* kSharedCaseWork = "shared_case_work";
+
 }  // namespace
 
 PreparedCase prepare_case(const Job& job, const JobOptions& options) {
@@ -127,12 +131,18 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
     }
     record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
     const auto evaluation_start = Clock::now();
-    record.metrics = prepared.evaluation
-                         ? evaluate(c, result, options.evaluation, *prepared.evaluation).values
-                         : evaluate(c, result, options.evaluation).values;
+    Evaluation evaluation = prepared.evaluation
+                                ? evaluate(c, result, options.evaluation, *prepared.evaluation)
+                                : evaluate(c, result, options.evaluation);
+    record.metrics = std::move(evaluation.values);
+    const bool shares_case_work = first_of_group && prepared.evaluation;
+    if (shares_case_work)
+      record.evaluation_phases.push_back({kSharedCaseWork, prepared.evaluation_seconds});
+    for (auto& phase : evaluation.phases)
+      record.evaluation_phases.push_back(std::move(phase));
     record.stages.push_back(
         {"evaluation",
-         seconds_since(evaluation_start) + (first_of_group ? prepared.evaluation_seconds : 0.0)});
+         seconds_since(evaluation_start) + (shares_case_work ? prepared.evaluation_seconds : 0.0)});
     record.metrics.push_back({metric_names::kTimeMethodS, record.method_seconds});
     if (!options.snapshot_dir.empty()) {
       const auto path = options.snapshot_dir / (file_stem_of_id(job.id()) + ".png");

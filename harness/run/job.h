@@ -88,6 +88,11 @@ struct JobRecord {
   /// copying the heap pages it will write, before the job starts: process_pool.h), "case"
   /// (generation), "method", "evaluation", "snapshot", "layers".
   std::vector<PhaseTiming> stages;
+  /// Wall time of the evaluation's steps (metrics/evaluation.h, evaluation_phases), and for
+  /// the first job of a group "shared_case_work": what the case's jobs share, built in the
+  /// group's process and counted in this job's "evaluation" stage. Empty where the job was not
+  /// evaluated.
+  std::vector<PhaseTiming> evaluation_phases;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
 
   /// The value of the metric `name`, or nullptr when the record does not have it.

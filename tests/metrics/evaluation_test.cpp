@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <string>
+#include <vector>
 
 namespace holebench {
 namespace {
@@ -158,6 +160,32 @@ TEST(Evaluation, FallbackHolesFractionCountsTheReportsWithAStandIn) {
 
   result.holes[2].fallback = "one_portion_without_features";
   EXPECT_EQ(evaluate(c, result).find("fallback_holes_fraction")->value, 0.25);
+}
+
+std::vector<std::string> phase_names(const Evaluation& e) {
+  std::vector<std::string> names;
+  for (const auto& phase : e.phases) {
+    EXPECT_GE(phase.seconds, 0.0) << phase.phase;
+    names.push_back(phase.phase);
+  }
+  return names;
+}
+
+// The evaluation times each of its steps once, in the order they run; a step that does not
+// run (the distances of an empty repair) is not timed.
+TEST(Evaluation, EachStepThatRunsIsTimedOnce) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult result;
+  result.repaired = c.input;
+  EXPECT_EQ(phase_names(evaluate(c, result)),
+            (std::vector<std::string>{"complete_scene", "repaired_scene", "patch_mean_distance",
+                                      "whole_model_distances", "hole_region_distances",
+                                      "new_vertex_error", "feature_recovery", "validity",
+                                      "classification", "arrow_visibility"}));
+  MethodResult nothing;
+  EXPECT_EQ(phase_names(evaluate(c, nothing)),
+            (std::vector<std::string>{"complete_scene", "validity", "classification",
+                                      "arrow_visibility"}));
 }
 
 TEST(Evaluation, SameInputsGiveTheSameNumbers) {

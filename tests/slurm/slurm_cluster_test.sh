@@ -208,6 +208,7 @@ def records(path):
         r.pop("method_seconds", None)
         r.pop("stages_s", None)
         r.pop("phases_s", None)
+        r.pop("evaluation_phases_s", None)
         r.pop("snapshot", None)
         r["metrics"] = {k: v for k, v in r.get("metrics", {}).items() if not k.startswith("time_")}
         out.append(r)

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <numeric>
 #include <string>
+#include <vector>
 
 namespace holebench::harness {
 namespace {
@@ -74,6 +76,60 @@ TEST(Job, LayersAreDrawnAndChangeNoMetric) {
   }
   ASSERT_EQ(drawn.holes.size(), plain.holes.size());
   EXPECT_EQ(drawn.holes[0].note, plain.holes[0].note);
+}
+
+std::vector<std::string> names_of(const std::vector<PhaseTiming>& phases) {
+  std::vector<std::string> names;
+  for (const auto& phase : phases)
+    names.push_back(phase.phase);
+  return names;
+}
+
+// A job's record times the evaluation's steps; the first job of a group also counts the case's
+// shared evaluation work there, as its evaluation stage does; a later job does not. The steps
+// add up to the stage (the rest is the job's bookkeeping around the call), and they survive
+// the record's JSON.
+TEST(Job, TheEvaluationStepsAddUpToTheStage) {
+  const Job job{"box/corner", "liepa_cgal", 0.0, 0, "no_user"};
+  const JobOptions options;
+  PreparedCase prepared = prepare_case(job, options);
+  share_case_work(prepared, options);
+  ASSERT_TRUE(prepared.evaluation);
+  const JobRecord first = run_job_on_case(job, prepared, true, options);
+  const JobRecord later = run_job_on_case(job, prepared, false, options);
+  ASSERT_EQ(first.status, JobStatus::Ok) << first.message;
+  const std::vector<std::string> steps{"kept_faces",
+                                       "repaired_scene",
+                                       "patch_mean_distance",
+                                       "whole_model_distances",
+                                       "hole_region_distances",
+                                       "new_vertex_error",
+                                       "feature_recovery",
+                                       "validity",
+                                       "classification",
+                                       "arrow_visibility"};
+  std::vector<std::string> first_steps = steps;
+  first_steps.insert(first_steps.begin(), "shared_case_work");
+  EXPECT_EQ(names_of(first.evaluation_phases), first_steps);
+  EXPECT_EQ(names_of(later.evaluation_phases), steps);
+  EXPECT_EQ(first.evaluation_phases[0].seconds, prepared.evaluation_seconds);
+  for (const JobRecord* record : {&first, &later}) {
+    double sum = 0.0;
+    for (const auto& phase : record->evaluation_phases) {
+      EXPECT_GE(phase.seconds, 0.0) << phase.phase;
+      sum += phase.seconds;
+    }
+    EXPECT_LE(sum, stage(*record, "evaluation"));
+    EXPECT_GT(sum, 0.5 * stage(*record, "evaluation"));
+  }
+  // (A results file read back has its timings by name, in the order of their names.)
+  const JobRecord back = record_from_json(nlohmann::json::parse(record_to_json(first).dump()));
+  std::map<std::string, double> written, read;
+  for (const auto& phase : first.evaluation_phases)
+    written[phase.phase] = phase.seconds;
+  for (const auto& phase : back.evaluation_phases)
+    read[phase.phase] = phase.seconds;
+  EXPECT_EQ(read, written);
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ import json, sys
 def records(path):
     out = []
     for r in json.load(open(path))["results"]:
-        for key in ("stages_s", "phases_s", "method_seconds", "method_run_seconds"):
+        for key in ("stages_s", "phases_s", "evaluation_phases_s", "method_seconds",
+                    "method_run_seconds"):
             r.pop(key, None)
         r.get("metrics", {}).pop("time_method_s", None)
         out.append(r)
