@@ -79,6 +79,9 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       open.repaired = c.input;
       expect_same_metrics(evaluate(c, open, options), evaluate(c, open, options, shared),
                           what + " open");
+      MethodResult nothing;  // an empty repair: no distance, the same validity
+      expect_same_metrics(evaluate(c, nothing, options), evaluate(c, nothing, options, shared),
+                          what + " empty");
     }
   }
 }

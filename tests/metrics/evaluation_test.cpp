@@ -3,6 +3,8 @@
 // and the same inputs give the same numbers.
 #include "metrics/evaluation.h"
 
+#include "metrics/case_evaluation.h"
+
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
@@ -186,6 +188,16 @@ TEST(Evaluation, EachStepThatRunsIsTimedOnce) {
   EXPECT_EQ(phase_names(evaluate(c, nothing)),
             (std::vector<std::string>{"complete_scene", "validity", "classification",
                                       "arrow_visibility"}));
+  // With the case's shared work: no scene of its own; what the repair kept is found first.
+  const CaseEvaluation shared(c, EvaluationOptions{});
+  EXPECT_EQ(phase_names(evaluate(c, result, EvaluationOptions{}, shared)),
+            (std::vector<std::string>{"kept_faces", "repaired_scene", "patch_mean_distance",
+                                      "whole_model_distances", "hole_region_distances",
+                                      "new_vertex_error", "feature_recovery", "validity",
+                                      "classification", "arrow_visibility"}));
+  EXPECT_EQ(
+      phase_names(evaluate(c, nothing, EvaluationOptions{}, shared)),
+      (std::vector<std::string>{"kept_faces", "validity", "classification", "arrow_visibility"}));
 }
 
 TEST(Evaluation, SameInputsGiveTheSameNumbers) {
