@@ -38,8 +38,12 @@ def method_colours(methods):
 
 
 def save(fig, path):
-    fig.savefig(path, dpi=DPI, metadata=METADATA)
+    # Written beside its place and renamed into it, as holebench writes its own files: a run
+    # killed while drawing leaves the previous picture or none, never half of one.
+    partial = path + ".partial"
+    fig.savefig(partial, dpi=DPI, metadata=METADATA, format="png")
     plt.close(fig)
+    os.replace(partial, path)
 
 
 def positive(values):

@@ -469,9 +469,12 @@ ReportSummary write_report(const ResultsData& data, const std::filesystem::path&
   write_file(summary.dir / "leaderboard.tex", leaderboard_latex(board));
   summary.files = {"leaderboard.md", "leaderboard.tex", "summary.md", "summary.csv", "tables.tex"};
 
-  // Plots: stale pictures go first, so that a failed run cannot show an older one.
-  for (const auto& [file, caption] : plot_files())
+  // Plots: stale pictures go first, so that a failed run cannot show an older one (with what a
+  // killed run of the script left beside them).
+  for (const auto& [file, caption] : plot_files()) {
     std::filesystem::remove(plots_dir / file);
+    std::filesystem::remove(plots_dir / (file + ".partial"));
+  }
   write_file(plots_dir / "plot_data.json", plot_data(data).dump(2) + "\n");
   summary.files.push_back("plots/plot_data.json");
   summary.plots_note = make_plots(data, plots_dir, options);
