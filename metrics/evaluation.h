@@ -61,6 +61,9 @@ struct EvaluationOptions {
 /// each where it ran): the records' `evaluation_phases_s` (docs/results.md), so that a run
 /// shows where its evaluation time goes.
 namespace evaluation_phases {
+/// What a case's evaluations share (metrics/case_evaluation.h), built once in the group's
+/// process: the runner counts it in the first job of the group.
+constexpr const char* kSharedCaseWork = "shared_case_work";
 constexpr const char* kCompleteScene = "complete_scene";  ///< where no shared one is given
 /// The input's faces the repair kept, and where it changed the input.
 constexpr const char* kKeptFaces = "kept_faces";

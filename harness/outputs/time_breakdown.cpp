@@ -8,10 +8,6 @@ namespace holebench::harness {
 
 namespace {
 
-constexpr const char* kMethodStage = "method";
-constexpr const char* kEvaluationStage = "evaluation";
-constexpr const char* kHeapWarmupStage = "heap_warmup";
-
 void add_to(std::vector<TimeTotal>& totals, const std::string& name, double seconds) {
   auto it = std::find_if(totals.begin(), totals.end(),
                          [&](const TimeTotal& total) { return total.name == name; });
@@ -65,7 +61,7 @@ TimeBreakdown time_breakdown(const std::vector<JobRecord>& records) {
     for (const auto& stage : record.stages) {
       add_to(breakdown.stages, stage.phase, stage.seconds);
       breakdown.total_seconds += stage.seconds;
-      if (stage.phase == kMethodStage)
+      if (stage.phase == stage_names::kMethod)
         add_to(breakdown.methods, record.job.method_id, stage.seconds);
     }
     for (const auto& phase : record.evaluation_phases)
@@ -74,8 +70,8 @@ TimeBreakdown time_breakdown(const std::vector<JobRecord>& records) {
   sort_by_seconds(breakdown.stages);
   sort_by_seconds(breakdown.evaluation_phases);
   sort_by_seconds(breakdown.methods);
-  breakdown.method_seconds = seconds_of(breakdown.stages, kMethodStage);
-  breakdown.heap_warmup_seconds = seconds_of(breakdown.stages, kHeapWarmupStage);
+  breakdown.method_seconds = seconds_of(breakdown.stages, stage_names::kMethod);
+  breakdown.heap_warmup_seconds = seconds_of(breakdown.stages, stage_names::kHeapWarmup);
   const double outside = breakdown.total_seconds - breakdown.method_seconds;
   breakdown.outside_over_methods = ratio(outside, breakdown.method_seconds);
   breakdown.outside_over_methods_without_warmup =
@@ -93,7 +89,7 @@ std::string format_time_breakdown(const TimeBreakdown& breakdown) {
                        "all");
   text +=
       format_table("Evaluation steps (`evaluation_phases_s`)", "step", breakdown.evaluation_phases,
-                   seconds_of(breakdown.stages, kEvaluationStage), "evaluation");
+                   seconds_of(breakdown.stages, stage_names::kEvaluation), "evaluation");
   text += format_table("Methods (the `method` stage)", "method", breakdown.methods,
                        breakdown.method_seconds, "methods");
   return text;

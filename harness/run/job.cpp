@@ -30,10 +30,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The evaluation phase of a group's first job that is the case's shared evaluation work
-// (JobRecord::evaluation_phases).
-constexpr const char* kSharedCaseWork = "shared_case_work";
-
 }  // namespace
 
 PreparedCase prepare_case(const Job& job, const JobOptions& options) {
@@ -91,7 +87,7 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
   const Case& c = prepared.c;
   record.case_family = c.family;
   record.case_kind = c.kind;
-  record.stages.push_back({"case", first_of_group ? prepared.seconds : 0.0});
+  record.stages.push_back({stage_names::kCase, first_of_group ? prepared.seconds : 0.0});
 
   try {
     const std::unique_ptr<Method> method =
@@ -117,7 +113,7 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
     double method_total = 0.0;
     for (double seconds : record.method_run_seconds)
       method_total += seconds;
-    record.stages.push_back({"method", method_total});
+    record.stages.push_back({stage_names::kMethod, method_total});
     record.user_interventions = user->interventions();
     record.user_interventions_by_kind = user->interventions_by_kind();
     record.phases = result.phases;
@@ -137,11 +133,12 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
     record.metrics = std::move(evaluation.values);
     const bool shares_case_work = first_of_group && prepared.evaluation;
     if (shares_case_work)
-      record.evaluation_phases.push_back({kSharedCaseWork, prepared.evaluation_seconds});
+      record.evaluation_phases.push_back(
+          {evaluation_phases::kSharedCaseWork, prepared.evaluation_seconds});
     for (auto& phase : evaluation.phases)
       record.evaluation_phases.push_back(std::move(phase));
     record.stages.push_back(
-        {"evaluation",
+        {stage_names::kEvaluation,
          seconds_since(evaluation_start) + (shares_case_work ? prepared.evaluation_seconds : 0.0)});
     record.metrics.push_back({metric_names::kTimeMethodS, record.method_seconds});
     if (!options.snapshot_dir.empty()) {
@@ -153,8 +150,9 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
       if (!options.viewer_mesh_dir.empty())
         viewer::write_job_meshes(c, result.repaired, job, options.viewer_mesh_dir, {},
                                  prepared.picture ? &prepared.picture->complete_scene() : nullptr);
-      record.stages.push_back({"snapshot", seconds_since(snapshot_start) +
-                                               (first_of_group ? prepared.picture_seconds : 0.0)});
+      record.stages.push_back(
+          {stage_names::kSnapshot,
+           seconds_since(snapshot_start) + (first_of_group ? prepared.picture_seconds : 0.0)});
       record.snapshot = (options.snapshot_dir.filename() / path.filename()).generic_string();
     }
     if (!options.layers_dir.empty()) {
@@ -162,7 +160,7 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
       const std::string stem = file_stem_of_id(job.id());
       render::write_png(render::layers_picture(c, result), options.layers_dir / (stem + ".png"));
       write_layers_obj(result.layers, options.layers_dir / (stem + ".obj"));
-      record.stages.push_back({"layers", seconds_since(layers_start)});
+      record.stages.push_back({stage_names::kLayers, seconds_since(layers_start)});
     }
   } catch (const InvalidInputError& e) {
     record.status = JobStatus::InvalidInput;

@@ -67,6 +67,20 @@ const char* to_string(JobStatus status);
 /// so a record read back has those two at zero.
 using HoleRecord = HoleReport;
 
+/// The names of a job's stages (JobRecord::stages, the records' `stages_s`): written by the
+/// runner (job.cpp, process_pool.cpp) and read by what sums them
+/// (harness/outputs/time_breakdown.h).
+namespace stage_names {
+/// A job forked from its group's process copying the heap pages it will write, before the job
+/// starts (process_pool.h).
+constexpr const char* kHeapWarmup = "heap_warmup";
+constexpr const char* kCase = "case";  ///< making the case (the group's first job)
+constexpr const char* kMethod = "method";
+constexpr const char* kEvaluation = "evaluation";
+constexpr const char* kSnapshot = "snapshot";
+constexpr const char* kLayers = "layers";
+}  // namespace stage_names
+
 struct JobRecord {
   Job job;
   std::string case_family;
@@ -84,14 +98,12 @@ struct JobRecord {
   double method_seconds = 0.0;
   /// Wall time of each run of the method (JobOptions::method_repetitions; one by default).
   std::vector<double> method_run_seconds;
-  /// Wall time of the job's stages: "heap_warmup" (a job forked from its group's process
-  /// copying the heap pages it will write, before the job starts: process_pool.h), "case"
-  /// (generation), "method", "evaluation", "snapshot", "layers".
+  /// Wall time of the job's stages, named as in stage_names, in the order they ran.
   std::vector<PhaseTiming> stages;
   /// Wall time of the evaluation's steps (metrics/evaluation.h, evaluation_phases), and for
-  /// the first job of a group "shared_case_work": what the case's jobs share, built in the
-  /// group's process and counted in this job's "evaluation" stage. Empty where the job was not
-  /// evaluated.
+  /// the first job of a group evaluation_phases::kSharedCaseWork: what the case's jobs share, built
+  /// in the group's process and counted in this job's "evaluation" stage. Empty where the job was
+  /// not evaluated.
   std::vector<PhaseTiming> evaluation_phases;
   std::string snapshot;  ///< PNG path relative to the output folder, or empty
 

@@ -195,7 +195,7 @@ void run_job_and_send(const Job& job, const JobFunction& run_one, int fd,
     record.message = "uncaught exception of unknown type";
   }
   if (heap_warmup_seconds)
-    record.stages.insert(record.stages.begin(), {"heap_warmup", *heap_warmup_seconds});
+    record.stages.insert(record.stages.begin(), {stage_names::kHeapWarmup, *heap_warmup_seconds});
   write_all(fd, record_to_json_line(record) + "\n");
 }
 
