@@ -55,6 +55,11 @@ struct HoleReport {
   /// whether or not the stand-in closed the hole (see `closed`). The names, by method, are in
   /// docs/results.md; `note` keeps the free-text reason.
   std::string fallback;
+  /// Empty unless the method's check of its own result found a defect there: the short,
+  /// stable snake_case name of it ("self_intersecting_patch": the hole's new faces intersect
+  /// each other or the mesh around the hole), whatever the fallback. `note` says more; the
+  /// tables count these holes beside the fallbacks (docs/results.md).
+  std::string defect;
   double seconds = 0.0;
 };
 

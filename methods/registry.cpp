@@ -6,6 +6,7 @@
 #include "methods/liepa_cgal/liepa_cgal.h"
 #include "methods/occt_fill/occt_fill.h"
 #include "methods/slice_loft/slice_loft.h"
+#include "methods/slice_loft/slice_loft_variants.h"
 
 #include <stdexcept>
 
@@ -23,9 +24,27 @@ std::vector<std::unique_ptr<Method>> make_all_methods() {
   return methods;
 }
 
-std::vector<std::unique_ptr<Method>> make_methods_run_by_name() {
+std::vector<std::unique_ptr<Method>> make_named_variants() {
   std::vector<std::unique_ptr<Method>> methods;
+  methods.push_back(std::make_unique<BrepGuidanceMethod>(BrepGuidanceMethod::plus()));
+  for (auto& variant : slice_loft::named_variants())
+    methods.push_back(std::make_unique<SliceLoftMethod>(std::move(variant)));
+  methods.push_back(std::make_unique<CrestFeatureMethod>(CrestFeatureMethod::plus()));
   methods.push_back(std::make_unique<BrepGuidanceMethod>(BrepGuidanceMethod::segmented()));
+  return methods;
+}
+
+std::vector<std::unique_ptr<Method>> make_ablation_methods() {
+  std::vector<std::unique_ptr<Method>> methods;
+  for (auto& method : slice_loft::ablation_methods())
+    methods.push_back(std::make_unique<SliceLoftMethod>(std::move(method)));
+  return methods;
+}
+
+std::vector<std::unique_ptr<Method>> make_methods_run_by_name() {
+  std::vector<std::unique_ptr<Method>> methods = make_named_variants();
+  for (auto& method : make_ablation_methods())
+    methods.push_back(std::move(method));
   return methods;
 }
 

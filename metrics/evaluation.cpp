@@ -368,6 +368,9 @@ void add_fallbacks(const MethodResult& result, Recorder& out) {
                                        [](const HoleReport& h) { return !h.fallback.empty(); });
   out.add(kFallbackHolesFraction,
           fraction(static_cast<std::size_t>(fallbacks), result.holes.size()));
+  const auto defects = std::count_if(result.holes.begin(), result.holes.end(),
+                                     [](const HoleReport& h) { return !h.defect.empty(); });
+  out.add(kDefectHolesFraction, fraction(static_cast<std::size_t>(defects), result.holes.size()));
 }
 
 // The metrics, with what the case's jobs share given (`shared`) or made here.

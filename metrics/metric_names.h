@@ -63,6 +63,8 @@ inline constexpr char kArrowVisibleFraction[] = "arrow_visible_fraction";
 inline constexpr char kArrowBestVisibleFraction[] = "arrow_best_visible_fraction";
 inline constexpr char kArrowDirectionErrorDeg[] = "arrow_direction_error_deg";
 inline constexpr char kFallbackHolesFraction[] = "fallback_holes_fraction";
+/// Share of the holes whose method found a defect in its own result (HoleReport::defect).
+inline constexpr char kDefectHolesFraction[] = "defect_holes_fraction";
 
 /// The method's wall time (the median over its runs): recorded by the harness, not judged by
 /// `holebench compare` unless a suite says so.

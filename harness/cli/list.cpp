@@ -13,20 +13,24 @@ namespace {
 
 int list_methods_and_families() {
   const auto methods = make_all_methods();
-  const auto variants = make_methods_run_by_name();
+  const auto variants = make_named_variants();
+  const auto ablation = make_ablation_methods();
   const auto external = predefined_external_methods();
   std::size_t width = 16;  // one column of names for the three lists
-  for (const auto* list : {&methods, &variants}) {
+  for (const auto* list : {&methods, &variants, &ablation}) {
     for (const auto& m : *list)
       width = std::max(width, m->id().size());
   }
   for (const auto& spec : external)
     width = std::max(width, spec.name.size());
-  fmt::print("methods:\n");
+  fmt::print("methods (the papers' steps as written, and the baselines):\n");
   for (const auto& m : methods)
     fmt::print("  {:<{}} {}\n", m->id(), width, m->description());
-  fmt::print("variants run by name only (--method ID):\n");
+  fmt::print("named variants with the project's departures, run by name only (--method ID):\n");
   for (const auto& m : variants)
+    fmt::print("  {:<{}} {}\n", m->id(), width, m->description());
+  fmt::print("the slice paper's Table 2 ablation, run by name only (suite slice_ablation):\n");
+  for (const auto& m : ablation)
     fmt::print("  {:<{}} {}\n", m->id(), width, m->description());
   fmt::print("external methods holebench predefines (run by name: --method NAME):\n");
   for (const auto& spec : external)

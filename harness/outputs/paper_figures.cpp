@@ -5,6 +5,7 @@
 #include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/report/summary_table.h"
+#include "harness/outputs/slice_ablation_table.h"
 #include "harness/outputs/slice_paper_figures.h"
 #include "harness/results/run_context.h"
 #include "methods/registry.h"
@@ -287,6 +288,7 @@ std::vector<std::filesystem::path> write_paper_figures(const FiguresOptions& opt
   if (data) {
     append(written, table_2(*data, options));
     append(written, write_slice_table_2_paper_rows(*data, options.out_dir));
+    append(written, write_slice_ablation_table(*data, options.out_dir));
     append(written, crease_table(*data, options));
   }
   return written;

@@ -86,6 +86,7 @@ HoleRecord hole_from_json(const nlohmann::json& h, const std::string& name) {
   hole.new_faces = static_cast<std::size_t>(integer_field(h, name, "new_faces", 0, 0, kSizeMax));
   hole.note = string_field(h, name, "note", "");
   hole.fallback = string_field(h, name, "fallback", "");
+  hole.defect = string_field(h, name, "defect", "");
   if (h.contains("arrow") && h["arrow"].is_object()) {
     const auto& arrow = h["arrow"];
     const std::string arrow_name = field_name(name, "arrow");
@@ -265,6 +266,8 @@ nlohmann::ordered_json record_to_json(const JobRecord& record) {
                                 {"new_faces", hole.new_faces},
                                 {"note", hole.note},
                                 {"fallback", hole.fallback}};
+    if (!hole.defect.empty())
+      h["defect"] = hole.defect;
     if (hole.arrow) {
       h["arrow"] = {{"position", point_to_json(hole.arrow->position)},
                     {"direction", point_to_json(hole.arrow->direction)}};

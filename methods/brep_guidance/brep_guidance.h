@@ -29,6 +29,10 @@ struct BrepGuidanceOptions {
   brep_guidance::FaceSource faces = brep_guidance::FaceSource::InputWhenPresent;
   /// Segmentation used when the input has no region ids (or `faces` asks for it).
   PlanarSegmentationOptions segmentation;
+  /// Where figure 4's closing fails, the project's later closing attempts
+  /// (exact_closing.h; brep_guidance_plus) before the hole is guided instead; off: the
+  /// paper's closing alone.
+  bool later_closing_attempts = false;
 };
 
 /// Runs the method on `holed`. Never sees ground truth: the structure size is a setting of
@@ -46,11 +50,22 @@ class BrepGuidanceMethod final : public Method {
     options.faces = brep_guidance::FaceSource::Segmentation;
     return options;
   }
+  /// The variant with the project's later closing attempts after figure 4's plan fails.
+  static BrepGuidanceOptions plus() {
+    BrepGuidanceOptions options;
+    options.later_closing_attempts = true;
+    return options;
+  }
   std::string id() const override {
+    if (options_.later_closing_attempts)
+      return "brep_guidance_plus";
     return options_.faces == brep_guidance::FaceSource::Segmentation ? "brep_guidance_segmented"
                                                                      : "brep_guidance";
   }
   std::string description() const override {
+    if (options_.later_closing_attempts)
+      return "brep_guidance with the project's later closing attempts where figure 4's "
+             "closing fails (docs/methods.md)";
     if (options_.faces == brep_guidance::FaceSource::Segmentation)
       return "brep_guidance with faces always from planar segmentation, even where the input "
              "carries B-Rep face ids";

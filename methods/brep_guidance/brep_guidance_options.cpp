@@ -44,7 +44,8 @@ MethodOptions BrepGuidanceMethod::options() const {
       .add("dependence_tolerance", options_.dependence_tolerance)
       .add("figure_3_rule", name_of(options_.figure_3_rule))
       .add("faces", name_of(options_.faces))
-      .add("segmentation", options_of(options_.segmentation));
+      .add("segmentation", options_of(options_.segmentation))
+      .add("later_closing_attempts", options_.later_closing_attempts);
 }
 
 }  // namespace holebench

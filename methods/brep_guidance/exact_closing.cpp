@@ -632,7 +632,8 @@ ClosingResult close_hole(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
 
 }  // namespace
 
-ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole) {
+ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
+                                 bool later_attempts) {
   // First as planned; then with the loop's vertices on the rebuilt edges as its corners (the
   // loop touches the faces' common line between the edge's ends); then with parts whose
   // projection is not simple triangulated in the loop's order; then with such parts first
@@ -642,7 +643,7 @@ ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole&
   // noise. The first that closes counts; the error is the first attempt's, followed by the
   // last error of each later kind that applied.
   ClosingResult first = close_hole(mesh, faces, hole, Attempt{});
-  if (first.closed)
+  if (first.closed || !later_attempts)
     return first;
   struct Try {
     Attempt attempt;

@@ -11,7 +11,8 @@
 // hole's mean edge length, the same points on both faces that share them.
 //
 // Every closing is kept only if its new faces intersect neither each other nor the mesh
-// within two vertex rings (CGAL, exact predicates). Where the plan fails (a part's
+// within two vertex rings (CGAL, exact predicates). The paper's closing is the plan alone. With
+// the project's option `later_attempts`, where the plan fails (a part's
 // projection is not simple, or its triangulation would reuse an edge, or the closing
 // intersects), more attempts follow, in this order: loop vertices that lie on a rebuilt edge
 // become its corners and the part is split where it passes them twice (the loop touches the
@@ -46,8 +47,11 @@ struct ClosingResult {
   std::string note;
 };
 
-/// Closes `hole` (k <= 3, inner, planes not dependent) in `mesh`. New faces get the region
-/// of the face they extend. On failure the mesh is left as it was.
-ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole);
+/// Closes `hole` (k <= 3, inner, planes not dependent) in `mesh` by figure 4's plan; with
+/// `later_attempts` (the project's option, brep_guidance_plus) the attempts above follow where
+/// the plan fails. New faces get the region of the face they extend. On failure the mesh is
+/// left as it was.
+ClosingResult close_hole_exactly(Mesh& mesh, const BrepFaces& faces, const Hole& hole,
+                                 bool later_attempts = false);
 
 }  // namespace holebench::brep_guidance

@@ -41,4 +41,21 @@ std::size_t patch_intersections(const Mesh& mesh, const std::vector<FaceHandle>&
   return count;
 }
 
+std::size_t check_patch_intersections(const Mesh& mesh, std::size_t first_new_face,
+                                      HoleReport& report) {
+  std::vector<FaceHandle> patch;
+  for (std::size_t f = first_new_face; f < mesh.n_faces(); ++f)
+    patch.push_back(mesh.face_handle(static_cast<int>(f)));
+  if (patch.empty())
+    return 0;
+  const std::size_t pairs = patch_intersections(mesh, patch);
+  if (pairs > 0) {
+    report.defect = kSelfIntersectingPatch;
+    report.note += (report.note.empty() ? "" : "; ") +
+                   std::string("the patch intersects itself or the mesh around the hole (") +
+                   std::to_string(pairs) + " face pairs)";
+  }
+  return pairs;
+}
+
 }  // namespace holebench

@@ -1,6 +1,8 @@
 #include "methods/crest_feature/crest_feature.h"
 
+
 #include "core/stopwatch.h"
+#include "methods/common/patch_intersections.h"
 #include "methods/crest_feature/boundary_edge_split.h"
 #include "methods/crest_feature/crest_line_correction.h"
 #include "methods/crest_feature/hole_identification.h"
@@ -125,6 +127,7 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     partition_seconds += seconds_since(start);
 
     start = Clock::now();
+    const std::size_t first_new_face = result.repaired.n_faces();
     HoleFillingResult filling = fill_hole(result.repaired, partition, options.filling);
     // Where the user's corner graph (not in the paper) gives sub-holes that cannot be
     // filled or stitched, the hole again with the paper's features alone (pairs and the
@@ -194,6 +197,10 @@ MethodResult run_crest_feature(const Mesh& holed, User& user, const CrestFeature
     report.note += fallback;
     if (!report.closed)
       report.note += "; not filled: " + filling.error;
+    // The method's check of its own patch (section 3.5 projects each sub-hole so that its
+    // triangulation does not intersect itself).
+    if (report.closed)
+      check_patch_intersections(result.repaired, first_new_face, report);
     closed += report.closed ? 1 : 0;
     report.seconds = seconds_since(hole_start);
     result.holes.push_back(std::move(report));

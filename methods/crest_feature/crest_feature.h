@@ -15,6 +15,9 @@
 #include "methods/crest_feature/hole_identification.h"
 #include "methods/method.h"
 
+#include <string>
+#include <utility>
+
 namespace holebench {
 
 struct CrestFeatureOptions {
@@ -32,11 +35,28 @@ struct CrestFeatureOptions {
 MethodResult run_crest_feature(const Mesh& holed, User& user,
                                const CrestFeatureOptions& options = {}, bool record_layers = false);
 
+/// The crest-line paper's method with its steps as written (default options), or a named
+/// variant with the project's departures (`plus()`: crest_feature_plus).
 class CrestFeatureMethod final : public Method {
  public:
-  explicit CrestFeatureMethod(CrestFeatureOptions options = {}) : options_(options) {}
-  std::string id() const override { return "crest_feature"; }
+  explicit CrestFeatureMethod(CrestFeatureOptions options = {}, std::string id = "crest_feature",
+                              std::string description = "")
+      : options_(options), id_(std::move(id)), description_(std::move(description)) {}
+  /// crest_feature_plus: P0/P3 on the fitted tangent line and feature points at the boundary
+  /// vertex nearest the crest line's ray (docs/crest_feature.md).
+  static CrestFeatureMethod plus() {
+    CrestFeatureOptions options;
+    options.interpolation.control_points = crest_feature::ControlPoints::TangentLine;
+    options.feature_points.on_boundary_edges = false;
+    return CrestFeatureMethod(
+        options, "crest_feature_plus",
+        "crest_feature with the project's departures: Catmull-Rom end points P0/P3 on the "
+        "fitted tangent line, feature points at the nearest boundary vertex");
+  }
+  std::string id() const override { return id_; }
   std::string description() const override {
+    if (!description_.empty())
+      return description_;
     return "crest-line paper: crest lines, feature points paired by the user, Catmull-Rom "
            "feature lines, sub-holes filled by projected constrained Delaunay triangulation";
   }
@@ -45,9 +65,11 @@ class CrestFeatureMethod final : public Method {
                    User& user) const override {
     return run_crest_feature(holed, user, options_, parameters.record_layers);
   }
+  const CrestFeatureOptions& crest_options() const { return options_; }
 
  private:
   CrestFeatureOptions options_;
+  std::string id_, description_;
 };
 
 }  // namespace holebench

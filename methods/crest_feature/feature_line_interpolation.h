@@ -41,13 +41,13 @@ struct FeatureLines {
 
 /// Where P0 and P3 of equation 3 come from: the crest line continued to distance d outside
 /// the hole by a quadratic fitted to its own points (the paper takes the adjacent crest
-/// points, so that the spline carries the crest line's curvature), or the point at distance
-/// d on the fitted tangent line (the default: on straight creases the crest points' zigzag
-/// bends the feature line, docs/crest_feature.md).
+/// points, so that the spline carries the crest line's curvature; the default), or the point
+/// at distance d on the fitted tangent line (the project's option, in crest_feature_plus: on
+/// straight creases the crest points' zigzag bends the feature line, docs/crest_feature.md).
 enum class ControlPoints { CrestPoints, TangentLine };
 
 struct InterpolationOptions {
-  ControlPoints control_points = ControlPoints::TangentLine;
+  ControlPoints control_points = ControlPoints::CrestPoints;
   /// At least this many segments per feature line (>= 2, so that a line always has an
   /// interpolated point and never coincides with an existing edge).
   int min_segments = 2;

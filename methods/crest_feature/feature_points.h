@@ -39,11 +39,13 @@ struct FeaturePointOptions {
   double corner_max_angle_degrees = 25.0;
   /// 3.4.1: a detected feature point is where the extrapolated crest line crosses a boundary
   /// edge (the point of the edge nearest the ray, within `ray_tolerance_edges`), inserted
-  /// into that edge (boundary_edge_split.h). Off (the default): the boundary vertex nearest
-  /// the ray. Off because on, the moved points change the partition of some holes, whose
-  /// planarity cuts then give self-intersecting patches (crease/fandisk/2 without a user:
-  /// 12 face pairs; docs/crest_feature.md).
-  bool on_boundary_edges = false;
+  /// into that edge (boundary_edge_split.h): the paper's "intersection point between the
+  /// crest line ... with the hole boundary", the default. Off (the project's option, in
+  /// crest_feature_plus): the boundary vertex nearest the ray, within `ray_tolerance_edges`.
+  /// On, the moved points change the partition of some holes, whose planarity cuts then give
+  /// self-intersecting patches (crease/fandisk/2 without a user: 12 face pairs;
+  /// docs/crest_feature.md).
+  bool on_boundary_edges = true;
   /// A crossing within this fraction of the edge's length from one of its vertices is that
   /// vertex (no sliver triangles). Also: where the hole's boundary runs along a crest line's
   /// ray (each next boundary vertex ahead and within this fraction of its edge's length of

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 namespace holebench::slice_loft {
@@ -41,6 +43,7 @@ int island_region(const Mesh& mesh, const Contour& island, const std::vector<int
 struct SlicePiece {
   std::vector<Point> points;
   bool front_on_boundary = false, back_on_boundary = false;
+  int front_edge = -1, back_edge = -1;  ///< the mesh edges the ends lie on
 };
 
 // The slice of `faces` by the plane dot(p - origin, d) = u.
@@ -88,6 +91,7 @@ std::vector<SlicePiece> slice(const Mesh& mesh, const std::vector<FaceHandle>& f
       continue;
     SlicePiece piece;
     piece.front_on_boundary = mesh.is_boundary(mesh.edge_handle(start));
+    piece.front_edge = start;
     piece.points.push_back(edge_point[start]);
     int edge = start, segment = first;
     while (segment >= 0 && !used[segment]) {
@@ -102,6 +106,7 @@ std::vector<SlicePiece> slice(const Mesh& mesh, const std::vector<FaceHandle>& f
       segment = next;
     }
     piece.back_on_boundary = mesh.is_boundary(mesh.edge_handle(edge));
+    piece.back_edge = edge;
     if (piece.points.size() >= 2)
       pieces.push_back(std::move(piece));
   }
@@ -180,6 +185,184 @@ Frame portion_frame(const Mesh& mesh, const std::vector<FaceHandle>& faces,
   frame.e = OpenMesh::cross(frame.n, frame.d);
   return frame;
 }
+
+// ---- section curves ------------------------------------------------------------------
+
+// Builds the section curve of one slice from its pieces (ordered by increasing w, each
+// running in that direction), tracing across the gaps with curvature continuity (eqs. 1-3).
+class SectionTracer {
+ public:
+  SectionTracer(const LoftedPatch& patch, const CompositeSurfaceOptions& options, double edge,
+                double w_min, double w_max, std::vector<Point> targets)
+      : patch_(patch), options_(options), w_min_(w_min), w_max_(w_max),
+        margin_(2.0 * edge), baseline_(options.baseline_edges * edge),
+        targets_(std::move(targets)) {
+    trace_.step = options.step_edges * edge;
+    trace_.max_turn_rad = options.max_turn_degrees * M_PI / 180.0;
+    trace_.max_steps =
+        static_cast<int>(std::ceil((w_max - w_min + 2.0 * margin_) / trace_.step)) + 8;
+  }
+
+  // The project's option (SectionExtent::InfluencingArea): the left extension, every piece
+  // with the traced gaps between them (hole, hole to island, ...), the right extension, each
+  // end extended beyond the portion by a margin (or bent onto a missing edge's crossing).
+  std::vector<Point> over_influencing_area(const std::vector<SlicePiece>& kept,
+                                           std::vector<Point>& traced) const {
+    std::vector<Point> points = extend_end(kept.front(), false, w_min_ - margin_, traced);
+    std::reverse(points.begin(), points.end());
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      points.insert(points.end(), kept[k].points.begin(), kept[k].points.end());
+      if (k + 1 == kept.size())
+        break;
+      const auto gap = trace_gap(kept[k], kept[k + 1]);
+      traced.insert(traced.end(), gap.begin(), gap.end());
+      points.insert(points.end(), gap.begin(), gap.end());
+    }
+    const auto right_end = extend_end(kept.back(), true, w_max_ + margin_, traced);
+    points.insert(points.end(), right_end.begin(), right_end.end());
+    return points;
+  }
+
+  // The paper's section (SectionExtent::HoleBoundary, section 4.4): from a slice point on the
+  // hole's boundary to the other end of the slice on the boundary, original (the next piece's
+  // end) or regenerated (a missing edge's crossing: a partial slice, figure 12a), through the
+  // islands' slices on the way (hole to island, island to island, island to hole). A slice
+  // that crosses the portion more than once gives one curve per crossing; the longest is the
+  // section (the loft takes one curve per slice).
+  std::vector<Point> between_boundaries(const std::vector<SlicePiece>& kept,
+                                        const std::function<bool(int)>& island_edge,
+                                        std::vector<Point>& traced) const {
+    std::vector<std::vector<Point>> curves;
+    std::vector<Point> current, current_traced;
+    std::size_t best_traced = 0;
+    std::vector<Point> best_traced_points;
+    auto close_curve = [&]() {
+      if (current.size() >= 2 && current_traced.size() >= best_traced) {
+        best_traced = current_traced.size();
+        best_traced_points = current_traced;
+        curves.push_back(current);
+      }
+      current.clear();
+      current_traced.clear();
+    };
+    // A partial slice at the left end: the hole (or its portion) lies beyond the first piece.
+    if (kept.front().front_on_boundary) {
+      std::vector<Point> beyond = extend_end(kept.front(), false, w_min_, current_traced);
+      std::reverse(beyond.begin(), beyond.end());
+      current = beyond;
+    }
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      const SlicePiece& piece = kept[k];
+      if (!current.empty()) {
+        // Arrived at this piece's front across a gap: an island's slice is part of the
+        // section; any other piece ends it.
+        if (island_edge(piece.front_edge) && island_edge(piece.back_edge)) {
+          current.insert(current.end(), piece.points.begin(), piece.points.end());
+        } else {
+          current.push_back(piece.points.front());
+          close_curve();
+        }
+      }
+      if (!piece.back_on_boundary) {
+        close_curve();
+        continue;
+      }
+      if (current.empty())
+        current.push_back(piece.points.back());
+      const double w_end = patch_.w_of(piece.points.back());
+      const double w_next = k + 1 < kept.size() ? patch_.w_of(kept[k + 1].points.front()) : 1e300;
+      const Point* target = nearest_target(w_end, true);
+      if (target && patch_.w_of(*target) < w_next) {
+        // A partial slice: the portion ends on a regenerated boundary (a missing edge).
+        const auto to_target = extend_end(piece, true, w_max_, current_traced);
+        current.insert(current.end(), to_target.begin(), to_target.end());
+        close_curve();
+      } else if (k + 1 < kept.size() && kept[k + 1].front_on_boundary) {
+        const auto gap = trace_gap(piece, kept[k + 1]);
+        current_traced.insert(current_traced.end(), gap.begin(), gap.end());
+        current.insert(current.end(), gap.begin(), gap.end());
+      } else {
+        // Nothing of the region beyond this end inside the influencing area: traced until it
+        // leaves the hole's extent.
+        const auto beyond = extend_end(piece, true, w_max_, current_traced);
+        current.insert(current.end(), beyond.begin(), beyond.end());
+        close_curve();
+      }
+    }
+    close_curve();
+    if (curves.empty())
+      return {};
+    traced.insert(traced.end(), best_traced_points.begin(), best_traced_points.end());
+    return curves.back();
+  }
+
+ private:
+  const LoftedPatch& patch_;
+  const CompositeSurfaceOptions& options_;
+  double w_min_, w_max_, margin_, baseline_;
+  std::vector<Point> targets_;
+  TraceOptions trace_;
+
+  // Traces from the end of a piece away from it: `outward` runs from that end inwards.
+  std::vector<Point> trace_from(const std::vector<Point>& outward, double w_stop,
+                                bool increasing) const {
+    const BackPoints back = back_points(outward, baseline_);
+    if (!back.valid)
+      return std::vector<Point>{outward.front()};
+    return trace_curvature_continuous(back.q2, back.q1, back.q0, trace_, [&](const Point& p) {
+      return increasing ? patch_.w_of(p) > w_stop : patch_.w_of(p) < w_stop;
+    });
+  }
+
+  // The missing-edge crossing nearest beyond `w_end` on the given side, or nullptr.
+  const Point* nearest_target(double w_end, bool right) const {
+    const Point* target = nullptr;
+    for (const Point& t : targets_) {
+      const double wt = patch_.w_of(t);
+      if ((right ? wt > w_end : wt < w_end) &&
+          (!target || std::abs(wt - w_end) < std::abs(patch_.w_of(*target) - w_end)))
+        target = &t;
+    }
+    return target;
+  }
+
+  // One-sided extension at an end of a piece, bent through a missing-edge crossing, else
+  // traced until `limit`; the points beyond the piece's end, going away from it.
+  std::vector<Point> extend_end(const SlicePiece& piece, bool right, double limit,
+                                std::vector<Point>& traced) const {
+    std::vector<Point> outward = piece.points;
+    if (right)
+      std::reverse(outward.begin(), outward.end());
+    const double w_end = patch_.w_of(outward.front());
+    const Point* target = nearest_target(w_end, right);
+    std::vector<Point> beyond;
+    if (target) {
+      const double wt = patch_.w_of(*target);
+      const auto from_end = trace_from(outward, right ? wt + margin_ : wt - margin_, right);
+      beyond = bend_to(from_end, *target, trace_.step);
+      traced.insert(traced.end(), beyond.begin(), beyond.end());
+      beyond.push_back(*target);
+    } else if (right ? w_end < limit : w_end > limit) {
+      beyond = trace_from(outward, limit, right);
+      beyond.erase(beyond.begin());
+      traced.insert(traced.end(), beyond.begin(), beyond.end());
+    }
+    return beyond;
+  }
+
+  // The points inside the gap between two pieces: traced from the left piece's end and bent
+  // onto the right one's (the paper's one end), or traced from both and blended.
+  std::vector<Point> trace_gap(const SlicePiece& left_piece, const SlicePiece& right_piece) const {
+    std::vector<Point> left(left_piece.points.rbegin(), left_piece.points.rend());
+    const std::vector<Point>& right = right_piece.points;
+    const double wl = patch_.w_of(left.front()), wr = patch_.w_of(right.front());
+    const auto from_left = trace_from(left, wr + margin_, true);
+    if (options_.tracing == GapTracing::OneEnd)
+      return bend_to(from_left, right.front(), trace_.step);
+    const auto from_right = trace_from(right, wl - margin_, false);
+    return bridge(from_left, from_right, trace_.step);
+  }
+};
 
 }  // namespace
 
@@ -288,12 +471,23 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
   const double spacing = std::min(extent / options.slices, options.max_slice_spacing_edges * edge);
   const int count = std::max(1, static_cast<int>(std::ceil(extent / spacing)));
   const double h = extent / count;
-  const double margin = 2.0 * edge;
-  const double baseline = options.baseline_edges * edge;
-  TraceOptions trace;
-  trace.step = options.step_edges * edge;
-  trace.max_turn_rad = options.max_turn_degrees * M_PI / 180.0;
-  trace.max_steps = static_cast<int>(std::ceil((w_max - w_min + 2.0 * margin) / trace.step)) + 8;
+
+  // Whether a slice point's edge is an island's boundary edge (section 4.4: a section runs
+  // from the hole's boundary to an island's and on through the island's slice).
+  std::set<int> island_vertices;
+  for (const auto& island : portion.islands) {
+    for (const auto& node : island) {
+      if (node.vertex.is_valid())
+        island_vertices.insert(node.vertex.idx());
+    }
+  }
+  auto island_edge = [&](int e) {
+    if (e < 0)
+      return false;
+    const auto h = mesh.halfedge_handle(mesh.edge_handle(e), 0);
+    return island_vertices.count(mesh.from_vertex_handle(h).idx()) > 0 &&
+           island_vertices.count(mesh.to_vertex_handle(h).idx()) > 0;
+  };
 
   for (int j = -options.extra_slices; j < count + options.extra_slices; ++j) {
     Section section;
@@ -326,71 +520,12 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
     std::sort(kept.begin(), kept.end(), [&](const SlicePiece& a, const SlicePiece& b) {
       return patch.w_of(a.points.front()) < patch.w_of(b.points.front());
     });
-    const std::vector<Point> targets =
-        crossings(portion.missing_edges, patch.origin, patch.d, section.u);
-
-    auto add_traced = [&](const std::vector<Point>& traced) {
-      section.traced.insert(section.traced.end(), traced.begin(), traced.end());
-    };
-    // Traces from the end of a piece away from it: `outward` runs from that end inwards.
-    auto trace_from = [&](std::vector<Point> outward, double w_stop, bool increasing) {
-      const BackPoints back = back_points(outward, baseline);
-      if (!back.valid)
-        return std::vector<Point>{outward.front()};
-      return trace_curvature_continuous(back.q2, back.q1, back.q0, trace, [&](const Point& p) {
-        return increasing ? patch.w_of(p) > w_stop : patch.w_of(p) < w_stop;
-      });
-    };
-    // One-sided extension at an end of the section, bent through a missing-edge crossing;
-    // the points beyond the piece's end, going away from it.
-    auto extend_end = [&](const SlicePiece& piece, bool right) {
-      std::vector<Point> outward = piece.points;
-      if (right)
-        std::reverse(outward.begin(), outward.end());
-      const double w_end = patch.w_of(outward.front());
-      const Point* target = nullptr;
-      for (const Point& t : targets) {
-        const double wt = patch.w_of(t);
-        if ((right ? wt > w_end : wt < w_end) &&
-            (!target || std::abs(wt - w_end) < std::abs(patch.w_of(*target) - w_end)))
-          target = &t;
-      }
-      const double limit = right ? w_max + margin : w_min - margin;
-      std::vector<Point> beyond;
-      if (target) {
-        const double wt = patch.w_of(*target);
-        const auto traced = trace_from(outward, right ? wt + margin : wt - margin, right);
-        beyond = bend_to(traced, *target, trace.step);
-        add_traced(beyond);
-        beyond.push_back(*target);
-      } else if (right ? w_end < limit : w_end > limit) {
-        beyond = trace_from(outward, limit, right);
-        beyond.erase(beyond.begin());
-        add_traced(beyond);
-      }
-      return beyond;
-    };
-
-    // The section in its own order: the left extension, the pieces with the traced gaps
-    // between them (hole, hole to island, ...), the right extension.
-    std::vector<Point> points = extend_end(kept.front(), false);
-    std::reverse(points.begin(), points.end());
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-      points.insert(points.end(), kept[k].points.begin(), kept[k].points.end());
-      if (k + 1 == kept.size())
-        break;
-      // A gap: traced from both of its ends and blended.
-      std::vector<Point> left(kept[k].points.rbegin(), kept[k].points.rend());
-      const std::vector<Point>& right = kept[k + 1].points;
-      const double wl = patch.w_of(left.front()), wr = patch.w_of(right.front());
-      const auto from_left = trace_from(left, wr + margin, true);
-      const auto from_right = trace_from(right, wl - margin, false);
-      const auto gap = bridge(from_left, from_right, trace.step);
-      add_traced(gap);
-      points.insert(points.end(), gap.begin(), gap.end());
-    }
-    const auto right_end = extend_end(kept.back(), true);
-    points.insert(points.end(), right_end.begin(), right_end.end());
+    SectionTracer tracer(patch, options, edge, w_min, w_max,
+                         crossings(portion.missing_edges, patch.origin, patch.d, section.u));
+    std::vector<Point> points =
+        options.extent == SectionExtent::InfluencingArea
+            ? tracer.over_influencing_area(kept, section.traced)
+            : tracer.between_boundaries(kept, island_edge, section.traced);
     section.points = std::move(points);
     if (section.points.size() >= 2)
       patch.sections.push_back(std::move(section));

@@ -41,17 +41,34 @@ std::vector<Portion> hole_portions(const Mesh& mesh, const std::vector<Contour>&
                                    const std::vector<int>& face_region);
 
 /// The direction the slicing plane advances in: the paper's longer edge of the portion's
-/// bounding box (a model axis), or the major axis of the portion's boundary in its plane
-/// (the default: it closes more holes on the paper's path, docs/slice_loft.md).
+/// bounding box (a model axis; the default), or the major axis of the portion's boundary in
+/// its plane (the project's option: it closes more holes, docs/slice_loft.md).
 enum class SlicingDirection { LongerBoxEdge, MajorAxis };
 
+/// What a section curve spans. The paper's (section 4.4): "from a slice point on the
+/// hole-boundary ... to the other end of the slice on the boundary (either original or
+/// regenerated boundary)", through the islands' slices, with partial slices ending on a
+/// missing edge (figure 12a). The project's option: every slice piece of the portion's region
+/// inside the influencing area, both ends extended beyond it, so that the loft interpolates
+/// the surrounding surface as well as the traced gap.
+enum class SectionExtent { HoleBoundary, InfluencingArea };
+
+/// How a gap of a section is traced. The paper's: from one end, "from a slice point on the
+/// hole-boundary" towards the other, which it meets (the trace is bent onto it); the project's
+/// option: from both ends and blended (the paper's own remedy at a cone's apex, figure 24).
+enum class GapTracing { OneEnd, BothEnds };
+
 struct CompositeSurfaceOptions {
-  SlicingDirection direction = SlicingDirection::MajorAxis;  /// measured: docs/slice_loft.md
+  SlicingDirection direction = SlicingDirection::LongerBoxEdge;
+  SectionExtent extent = SectionExtent::HoleBoundary;
+  GapTracing tracing = GapTracing::OneEnd;
   /// Slices across the longer edge of the portion's box (the paper's offset as a count) ...
   int slices = 10;
   /// ... but at most this many mean boundary-edge lengths apart.
   double max_slice_spacing_edges = 1.0;
-  int extra_slices = 2;         ///< slices beyond each end of the portion
+  /// Slices beyond each end of the portion (the project's option, with
+  /// SectionExtent::InfluencingArea; the paper slices the portion only).
+  int extra_slices = 0;
   double baseline_edges = 2.0;  ///< spacing of the points a trace takes curvature from
   double step_edges = 0.25;     ///< tracing step along a section
   double max_turn_degrees = 20.0;

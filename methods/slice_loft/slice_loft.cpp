@@ -1,6 +1,7 @@
 #include "methods/slice_loft/slice_loft.h"
 
 #include "core/stopwatch.h"
+#include "methods/common/patch_intersections.h"
 #include "methods/slice_loft/pinched_portions.h"
 
 #include <algorithm>
@@ -165,9 +166,13 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
       }
     }
   }
-  std::size_t on_surface = 0, on_disc = 0, chords = 0;
+  // Loops trimmed in the second domain tried (the boundary folds in the first).
+  const TrimmingDomain second_domain = options.tessellation.plane_first
+                                           ? TrimmingDomain::Surface
+                                           : TrimmingDomain::PortionPlane;
+  std::size_t in_second = 0, on_disc = 0, chords = 0;
   for (const auto& t : tessellations) {
-    on_surface += t.domain == TrimmingDomain::Surface ? 1 : 0;
+    in_second += t.domain == second_domain ? 1 : 0;
     on_disc += t.domain == TrimmingDomain::DevelopedDisc ? 1 : 0;
     chords += t.chords_split;
   }
@@ -182,10 +187,13 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
     remarks.push_back("pinched boundary: " + std::to_string(portions.size()) +
                       " portion(s) trimmed as " + std::to_string(pieces.size()) + " loops");
   }
-  if (on_surface > 0) {
-    remarks.push_back(
-        std::to_string(on_surface) + " of " + std::to_string(pieces.size()) +
-        " loop(s) trimmed on the surface (the boundary folds in the portion's plane)");
+  if (in_second > 0) {
+    remarks.push_back(std::to_string(in_second) + " of " + std::to_string(pieces.size()) +
+                      (options.tessellation.plane_first
+                           ? " loop(s) trimmed on the surface (the boundary folds in the "
+                             "portion's plane)"
+                           : " loop(s) trimmed in the portion's plane (the boundary folds on "
+                             "the surface)"));
   }
   if (on_disc > 0) {
     remarks.push_back(std::to_string(on_disc) + " of " + std::to_string(pieces.size()) +
@@ -264,6 +272,7 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options,
     std::string remark;
     // The step IV layers of the attempt that made the patch (or of the last one tried).
     std::vector<MethodLayer> attempt;
+    const std::size_t first_new_face = result.repaired.n_faces();
     std::string error = fill(result.repaired, holed, found, hole, features, face_region, options,
                              clock, sewn, true, remark, record_layers ? &attempt : nullptr);
     if (!error.empty()) {
@@ -282,9 +291,12 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options,
       note << "; " << remark;
     append_layers(result.layers, std::move(attempt));
     report.closed = error.empty();
+    report.note = note.str();
+    // Section 4.6 expects no self-intersecting facets; the method checks its patch.
+    if (report.closed)
+      check_patch_intersections(result.repaired, first_new_face, report);
     report.new_faces = sewn.new_faces;
     report.new_vertices = sewn.new_vertices;
-    report.note = note.str();
     report.seconds = seconds_since(hole_start);
     closed += report.closed ? 1 : 0;
     result.holes.push_back(std::move(report));

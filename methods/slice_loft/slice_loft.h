@@ -17,6 +17,9 @@
 #include "methods/slice_loft/missing_features.h"
 #include "methods/slice_loft/trimming_and_sewing.h"
 
+#include <string>
+#include <utility>
+
 namespace holebench {
 
 struct SliceLoftOptions {
@@ -39,10 +42,13 @@ MethodResult run_slice_loft(const Mesh& holed, const SliceLoftOptions& options =
 
 /// The slice paper's method (`slice_loft`), or with `tessellation.direct` its comparison in
 /// Table 2's right column, "direct tessellation of the discrete points generated from the
-/// slice sections" (`slice_direct`).
+/// slice sections" (`slice_direct`). Default options are the paper's steps as written; the
+/// project's departures and the named variants built from them are in slice_loft_variants.h.
 class SliceLoftMethod final : public Method {
  public:
-  explicit SliceLoftMethod(SliceLoftOptions options = {}) : options_(options) {}
+  explicit SliceLoftMethod(SliceLoftOptions options = {}, std::string id = "",
+                           std::string description = "")
+      : options_(options), id_(std::move(id)), description_(std::move(description)) {}
   /// The comparison method, `slice_direct`.
   static SliceLoftMethod direct() {
     SliceLoftOptions options;
@@ -50,9 +56,13 @@ class SliceLoftMethod final : public Method {
     return SliceLoftMethod(options);
   }
   std::string id() const override {
+    if (!id_.empty())
+      return id_;
     return options_.tessellation.direct ? "slice_direct" : "slice_loft";
   }
   std::string description() const override {
+    if (!description_.empty())
+      return description_;
     return options_.tessellation.direct
                ? "slice paper's comparison: direct tessellation of the slice section points"
                : "slice paper: segmented boundary, missing edges and corner traced with "
@@ -62,9 +72,11 @@ class SliceLoftMethod final : public Method {
   MethodResult run(const Mesh& holed, const MethodParameters& parameters, User&) const override {
     return run_slice_loft(holed, options_, parameters.record_layers);
   }
+  const SliceLoftOptions& slice_options() const { return options_; }
 
  private:
   SliceLoftOptions options_;
+  std::string id_, description_;
 };
 
 }  // namespace holebench

@@ -42,9 +42,31 @@ const char* name_of(SlicingDirection direction) {
   return "unknown";
 }
 
+const char* name_of(SectionExtent extent) {
+  switch (extent) {
+    case SectionExtent::HoleBoundary:
+      return "hole_boundary";
+    case SectionExtent::InfluencingArea:
+      return "influencing_area";
+  }
+  return "unknown";
+}
+
+const char* name_of(GapTracing tracing) {
+  switch (tracing) {
+    case GapTracing::OneEnd:
+      return "one_end";
+    case GapTracing::BothEnds:
+      return "both_ends";
+  }
+  return "unknown";
+}
+
 MethodOptions options_of(const CompositeSurfaceOptions& o) {
   return MethodOptions()
       .add("direction", name_of(o.direction))
+      .add("extent", name_of(o.extent))
+      .add("tracing", name_of(o.tracing))
       .add("slices", o.slices)
       .add("max_slice_spacing_edges", o.max_slice_spacing_edges)
       .add("extra_slices", o.extra_slices)
@@ -61,7 +83,8 @@ MethodOptions options_of(const TessellationOptions& o) {
       .add("direct", o.direct)
       .add("feature_snap_edges", o.feature_snap_edges)
       .add("max_chord_splits", o.max_chord_splits)
-      .add("developed_disc", o.developed_disc);
+      .add("developed_disc", o.developed_disc)
+      .add("plane_first", o.plane_first);
 }
 
 }  // namespace

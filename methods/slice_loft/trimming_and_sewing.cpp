@@ -351,22 +351,29 @@ PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const P
 PatchTessellation tessellate_trimmed_patch(const Mesh& mesh, const Portion& portion,
                                            const LoftedPatch& patch, double edge_length,
                                            const TessellationOptions& options) {
-  // The portion's plane first: exact for the planar portions most holes consist of. Where the
-  // boundary folds over in that plane, on the surface itself.
-  PatchTessellation in_plane =
-      tessellate_in(mesh, TrimmingDomain::PortionPlane, portion, patch, edge_length, options);
-  if (in_plane.ok || in_plane.failure == TriangulationFailure::ShortLoop)
-    return in_plane;
-  PatchTessellation on_surface =
-      tessellate_in(mesh, TrimmingDomain::Surface, portion, patch, edge_length, options);
-  if (on_surface.ok || !options.developed_disc)
-    return on_surface;
+  // The paper trims the surface in its own parameter domain (section 4.5); the project's
+  // option trims in the portion's plane first, a projection that is exact for the planar
+  // portions most holes consist of. Where the boundary folds over in the first domain, the
+  // other is tried.
+  const TrimmingDomain first_domain =
+      options.plane_first ? TrimmingDomain::PortionPlane : TrimmingDomain::Surface;
+  const TrimmingDomain second_domain =
+      options.plane_first ? TrimmingDomain::Surface : TrimmingDomain::PortionPlane;
+  PatchTessellation first =
+      tessellate_in(mesh, first_domain, portion, patch, edge_length, options);
+  if (first.ok || first.failure == TriangulationFailure::ShortLoop)
+    return first;
+  PatchTessellation second =
+      tessellate_in(mesh, second_domain, portion, patch, edge_length, options);
+  if (second.ok || !options.developed_disc)
+    return second;
   PatchTessellation on_disc =
       tessellate_in(mesh, TrimmingDomain::DevelopedDisc, portion, patch, edge_length, options);
   if (on_disc.ok)
     return on_disc;
-  on_disc.error = in_plane.error + "; on the surface too: " + on_surface.error +
-                  "; on the developed disc too: " + on_disc.error;
+  on_disc.error = first.error +
+                  (options.plane_first ? "; on the surface too: " : "; in the plane too: ") +
+                  second.error + "; on the developed disc too: " + on_disc.error;
   return on_disc;
 }
 

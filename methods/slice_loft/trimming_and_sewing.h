@@ -29,6 +29,10 @@ struct TessellationOptions {
   int max_chord_splits = 8;
   /// Trim on the developed disc where the plane and the surface domain both fold.
   bool developed_disc = true;
+  /// Trim in the portion's plane first (a projection; the project's option) instead of the
+  /// paper's order, the lofted surface's own parameter domain first (section 4.5: the
+  /// composite surface split by the boundary edges projected onto it, figure 14b).
+  bool plane_first = false;
 };
 
 /// Where a patch is trimmed: the portion's plane (u, w), a projection that is exact and
@@ -52,8 +56,9 @@ struct PatchTessellation {
   std::string error;
 };
 
-/// Trims in the portion's plane, where the boundary folds there on the surface, and where it
-/// folds there too on the developed disc (not for slice_direct, whose section points have
+/// Trims on the surface's (u, s) domain, where the boundary folds there in the portion's
+/// plane (`plane_first`: the plane first, then the surface), and where it folds in both on the
+/// developed disc (not for slice_direct, whose section points have
 /// no place on the disc). `mesh`
 /// is the holed input (for the chords it already has).
 PatchTessellation tessellate_trimmed_patch(const Mesh& mesh, const Portion& portion,

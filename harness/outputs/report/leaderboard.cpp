@@ -17,6 +17,7 @@ const std::vector<LeaderboardColumn>& leaderboard_columns() {
   static const std::vector<LeaderboardColumn> columns{
       {"success_share", "success", true},
       {"fallback_share", "fallback", false},
+      {"defect_share", "self-checked defect", false},
       {"hole_hausdorff_rel_diag_median", "hole Hausdorff (median)", false},
       {"new_vertex_mean_error_rel_diag_median", "new-vertex error (median)", false},
       {"missing_edge_covered_fraction_mean", "missing-edge coverage (mean)", true},
@@ -76,12 +77,15 @@ LeaderboardEntry make_entry(const std::string& method, const Records& records) {
     entry.holes += r->holes.size();
     for (const auto& hole : r->holes)
       entry.fallback_holes += hole.fallback.empty() ? 0 : 1;
+    for (const auto& hole : r->holes)
+      entry.defect_holes += hole.defect.empty() ? 0 : 1;
     if (method_returned(r->status))
       times.push_back(r->method_seconds);
   }
   entry.values = {
       share(entry.successes, entry.jobs),
       share(entry.fallback_holes, entry.holes),
+      share(entry.defect_holes, entry.holes),
       median_of_metric(records, metric_names::kHoleHausdorffRelDiag),
       median_of_metric(records, metric_names::kNewVertexMeanErrorRelDiag),
       mean_of_metric(records, metric_names::kMissingEdgeCoveredFraction),
@@ -286,6 +290,10 @@ std::string leaderboard_markdown(const Leaderboard& board) {
   out += fmt::format(
       "\n`success`: share of jobs with status ok and every hole closed. `fallback`: share of the "
       "hole records (jobs of every status) a stand-in handled instead of the method's own path. "
+      "`self-checked defect`: share of the hole records whose method's check of its own patch "
+      "found a defect (a patch that intersects itself or the mesh around the hole); methods "
+      "that do not check have 0. Rows named `<method>_plus` are the papers' methods with the "
+      "project's departures; the row named after the paper runs its steps as written. "
       "Medians and the mean are over the jobs that have the metric (a failed job has none; read "
       "them beside `success`); lengths are relative to the bounding-box diagonal; the method "
       "time is over the jobs whose method returned. Bold: the best of the rows of the same "

@@ -47,6 +47,9 @@ struct LeaderboardEntry {
   std::size_t successes = 0;       ///< status ok and every hole closed
   std::size_t holes = 0;           ///< hole records of the jobs (every status)
   std::size_t fallback_holes = 0;  ///< of those, with a non-empty `fallback`
+  /// Of those, with a defect the method found in its own result (HoleReport::defect, e.g. a
+  /// self-intersecting patch).
+  std::size_t defect_holes = 0;
   /// One per leaderboard_columns(); nullopt: no job of the group has the value.
   std::vector<std::optional<double>> values;
   /// One per column: the best value of the group's methods (ties at the tables' precision,
