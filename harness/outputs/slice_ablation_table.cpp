@@ -2,8 +2,8 @@
 
 #include "core/statistics.h"
 #include "harness/outputs/markup_escape.h"
-#include "metrics/metric_names.h"
 #include "methods/slice_loft/slice_loft_variants.h"
+#include "metrics/metric_names.h"
 
 #include <fmt/format.h>
 
@@ -34,8 +34,7 @@ double median(std::vector<double> values) {
 }
 
 // The records of one method by job key without the method: case, user, noise, seed.
-std::map<std::string, const JobRecord*> by_job(const ResultsData& data,
-                                               const std::string& method) {
+std::map<std::string, const JobRecord*> by_job(const ResultsData& data, const std::string& method) {
   std::map<std::string, const JobRecord*> jobs;
   for (const auto& r : data.records) {
     if (r.job.method_id == method)
@@ -102,10 +101,11 @@ std::vector<std::filesystem::path> write_slice_ablation_table(
       "| setting | noise % | measure | holes | slice_loft median | slice_direct median | loft "
       "better | direct better | p |\n|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& row : slice_ablation_rows(data)) {
-    md += fmt::format("| {} (`{}` / `{}`) | {:g} | {} | {} | {:.3e} | {:.3e} | {} | {} | {:.2g} |\n",
-                      markdown_cell(row.pair.setting), row.pair.loft, row.pair.direct,
-                      row.noise_percent, row.measure, row.holes, row.loft_median,
-                      row.direct_median, row.loft_better, row.direct_better, row.p_value);
+    md +=
+        fmt::format("| {} (`{}` / `{}`) | {:g} | {} | {} | {:.3e} | {:.3e} | {} | {} | {:.2g} |\n",
+                    markdown_cell(row.pair.setting), row.pair.loft, row.pair.direct,
+                    row.noise_percent, row.measure, row.holes, row.loft_median, row.direct_median,
+                    row.loft_better, row.direct_better, row.p_value);
   }
   md +=
       "\nThe slice paper's Table 2 settled by ablation: the lofted patch (slice_loft) against "

@@ -27,8 +27,8 @@ struct SliceAblationRow {
   SliceAblationPair pair;
   double noise_percent = 0.0;
   std::string measure;
-  std::size_t holes = 0;          ///< jobs with the measure on both sides
-  double loft_median = 0.0;       ///< over those jobs
+  std::size_t holes = 0;     ///< jobs with the measure on both sides
+  double loft_median = 0.0;  ///< over those jobs
   double direct_median = 0.0;
   std::size_t loft_better = 0;    ///< jobs where the loft's value is lower
   std::size_t direct_better = 0;  ///< jobs where the direct value is lower

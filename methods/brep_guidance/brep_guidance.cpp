@@ -98,7 +98,8 @@ MethodResult run_brep_guidance(const Mesh& holed, const MethodParameters& parame
     }
     if (!guide) {
       start = Clock::now();
-      const ClosingResult closing = close_hole_exactly(result.repaired, faces, hole, options.later_closing_attempts);
+      const ClosingResult closing =
+          close_hole_exactly(result.repaired, faces, hole, options.later_closing_attempts);
       close_seconds += seconds_since(start);
       report.closed = closing.closed;
       report.new_faces = closing.new_faces;

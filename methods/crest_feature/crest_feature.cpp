@@ -1,6 +1,5 @@
 #include "methods/crest_feature/crest_feature.h"
 
-
 #include "core/stopwatch.h"
 #include "methods/common/patch_intersections.h"
 #include "methods/crest_feature/boundary_edge_split.h"

@@ -194,8 +194,12 @@ class SectionTracer {
  public:
   SectionTracer(const LoftedPatch& patch, const CompositeSurfaceOptions& options, double edge,
                 double w_min, double w_max, std::vector<Point> targets)
-      : patch_(patch), options_(options), w_min_(w_min), w_max_(w_max),
-        margin_(2.0 * edge), baseline_(options.baseline_edges * edge),
+      : patch_(patch),
+        options_(options),
+        w_min_(w_min),
+        w_max_(w_max),
+        margin_(2.0 * edge),
+        baseline_(options.baseline_edges * edge),
         targets_(std::move(targets)) {
     trace_.step = options.step_edges * edge;
     trace_.max_turn_rad = options.max_turn_degrees * M_PI / 180.0;
@@ -522,10 +526,9 @@ LoftedPatch loft_portion(const Mesh& mesh, const Hole& hole, const Portion& port
     });
     SectionTracer tracer(patch, options, edge, w_min, w_max,
                          crossings(portion.missing_edges, patch.origin, patch.d, section.u));
-    std::vector<Point> points =
-        options.extent == SectionExtent::InfluencingArea
-            ? tracer.over_influencing_area(kept, section.traced)
-            : tracer.between_boundaries(kept, island_edge, section.traced);
+    std::vector<Point> points = options.extent == SectionExtent::InfluencingArea
+                                    ? tracer.over_influencing_area(kept, section.traced)
+                                    : tracer.between_boundaries(kept, island_edge, section.traced);
     section.points = std::move(points);
     if (section.points.size() >= 2)
       patch.sections.push_back(std::move(section));

@@ -167,9 +167,8 @@ std::string fill(Mesh& mesh, const Mesh& holed, const HolesAndIslands& found, co
     }
   }
   // Loops trimmed in the second domain tried (the boundary folds in the first).
-  const TrimmingDomain second_domain = options.tessellation.plane_first
-                                           ? TrimmingDomain::Surface
-                                           : TrimmingDomain::PortionPlane;
+  const TrimmingDomain second_domain =
+      options.tessellation.plane_first ? TrimmingDomain::Surface : TrimmingDomain::PortionPlane;
   std::size_t in_second = 0, on_disc = 0, chords = 0;
   for (const auto& t : tessellations) {
     in_second += t.domain == second_domain ? 1 : 0;

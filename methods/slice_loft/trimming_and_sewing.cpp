@@ -359,8 +359,7 @@ PatchTessellation tessellate_trimmed_patch(const Mesh& mesh, const Portion& port
       options.plane_first ? TrimmingDomain::PortionPlane : TrimmingDomain::Surface;
   const TrimmingDomain second_domain =
       options.plane_first ? TrimmingDomain::Surface : TrimmingDomain::PortionPlane;
-  PatchTessellation first =
-      tessellate_in(mesh, first_domain, portion, patch, edge_length, options);
+  PatchTessellation first = tessellate_in(mesh, first_domain, portion, patch, edge_length, options);
   if (first.ok || first.failure == TriangulationFailure::ShortLoop)
     return first;
   PatchTessellation second =

@@ -80,7 +80,8 @@ TEST(PaperDefaults, CrestFeatureTakesTheAdjacentCrestPointsAndTheBoundaryCrossin
 TEST(PaperDefaults, BrepGuidanceClosesByFigure4Only) {
   EXPECT_FALSE(BrepGuidanceOptions{}.later_closing_attempts);
   const MethodOptionValue off = false, on = true;
-  const MethodOptionValue* paper = make_method("brep_guidance")->options().find("later_closing_attempts");
+  const MethodOptionValue* paper =
+      make_method("brep_guidance")->options().find("later_closing_attempts");
   const MethodOptionValue* plus =
       make_method("brep_guidance_plus")->options().find("later_closing_attempts");
   ASSERT_NE(paper, nullptr);
