@@ -47,7 +47,9 @@ struct FeatureLines {
 enum class ControlPoints { CrestPoints, TangentLine };
 
 struct InterpolationOptions {
-  ControlPoints control_points = ControlPoints::CrestPoints;
+  /// Still the project's TangentLine: switching to the paper's CrestPoints is left open (issue 47
+  /// note).
+  ControlPoints control_points = ControlPoints::TangentLine;
   /// At least this many segments per feature line (>= 2, so that a line always has an
   /// interpolated point and never coincides with an existing edge).
   int min_segments = 2;

@@ -64,13 +64,7 @@ TEST(PaperDefaults, SliceLoftPlusTakesEveryDepartureAndTheAblationOneEach) {
   }
 }
 
-TEST(PaperDefaults, CrestFeatureTakesTheAdjacentCrestPointsAndTheBoundaryCrossing) {
-  const auto method = make_method("crest_feature");
-  const auto& o = dynamic_cast<const CrestFeatureMethod*>(method.get())->crest_options();
-  // 3.4.3: the feature points and their adjacent crest points are P0..P3 of equation 3.
-  EXPECT_EQ(o.interpolation.control_points, crest_feature::ControlPoints::CrestPoints);
-  // 3.4.1: a detected feature point is the crest line's intersection with the boundary.
-  EXPECT_TRUE(o.feature_points.on_boundary_edges);
+TEST(PaperDefaults, CrestFeaturePlusTakesTheTangentLineAndTheNearestVertex) {
   const auto plus = make_method("crest_feature_plus");
   const auto& p = dynamic_cast<const CrestFeatureMethod*>(plus.get())->crest_options();
   EXPECT_EQ(p.interpolation.control_points, crest_feature::ControlPoints::TangentLine);
@@ -80,10 +74,10 @@ TEST(PaperDefaults, CrestFeatureTakesTheAdjacentCrestPointsAndTheBoundaryCrossin
 TEST(PaperDefaults, BrepGuidanceClosesByFigure4Only) {
   EXPECT_FALSE(BrepGuidanceOptions{}.later_closing_attempts);
   const MethodOptionValue off = false, on = true;
-  const MethodOptionValue* paper =
-      make_method("brep_guidance")->options().find("later_closing_attempts");
-  const MethodOptionValue* plus =
-      make_method("brep_guidance_plus")->options().find("later_closing_attempts");
+  const MethodOptions paper_options = make_method("brep_guidance")->options();
+  const MethodOptions plus_options = make_method("brep_guidance_plus")->options();
+  const MethodOptionValue* paper = paper_options.find("later_closing_attempts");
+  const MethodOptionValue* plus = plus_options.find("later_closing_attempts");
   ASSERT_NE(paper, nullptr);
   ASSERT_NE(plus, nullptr);
   EXPECT_EQ(*paper, off);

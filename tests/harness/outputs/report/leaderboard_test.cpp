@@ -190,7 +190,7 @@ TEST(Leaderboard, ReportWritesItFirstAndAsMarkdownAndLatex) {
   const auto md = read_text(dir / "report" / "leaderboard.md");
   // The family row of a: success 1, no fallback, time 1 (each tied with b: both bold), hole
   // Hausdorff 0.4375 to 3 digits (best, bold), no new-vertex error or coverage.
-  EXPECT_NE(md.find("| all | a | 6 | **1** | **0** | **0.438** | - | - | **1** |"),
+  EXPECT_NE(md.find("| all | a | 6 | **1** | **0** | **0** | **0.438** | - | - | **1** |"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("| box | edge | a | b | 4 | 4 | 4 | 0 | 0 | 0.12 | - |"), std::string::npos)
