@@ -27,12 +27,6 @@ const std::vector<std::pair<const char*, const char*>>& measures() {
   return list;
 }
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // The records of one method by job key without the method: case, user, noise, seed.
 std::map<std::string, const JobRecord*> by_job(const ResultsData& data, const std::string& method) {
   std::map<std::string, const JobRecord*> jobs;
@@ -85,8 +79,8 @@ std::vector<SliceAblationRow> slice_ablation_rows(const ResultsData& data) {
         if (a.empty())
           continue;
         row.holes = a.size();
-        row.loft_median = median(a);
-        row.direct_median = median(b);
+        row.loft_median = median_of(a);
+        row.direct_median = median_of(b);
         row.p_value = wilcoxon_signed_rank(differences).p_value;
         rows.push_back(row);
       }

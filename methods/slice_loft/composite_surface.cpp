@@ -236,15 +236,14 @@ class SectionTracer {
   std::vector<Point> between_boundaries(const std::vector<SlicePiece>& kept,
                                         const std::function<bool(int)>& island_edge,
                                         std::vector<Point>& traced) const {
-    std::vector<std::vector<Point>> curves;
-    std::vector<Point> current, current_traced;
+    std::vector<Point> best, current, current_traced;
     std::size_t best_traced = 0;
     std::vector<Point> best_traced_points;
     auto close_curve = [&]() {
       if (current.size() >= 2 && current_traced.size() >= best_traced) {
         best_traced = current_traced.size();
         best_traced_points = current_traced;
-        curves.push_back(current);
+        best = current;
       }
       current.clear();
       current_traced.clear();
@@ -294,10 +293,10 @@ class SectionTracer {
       }
     }
     close_curve();
-    if (curves.empty())
+    if (best.empty())
       return {};
     traced.insert(traced.end(), best_traced_points.begin(), best_traced_points.end());
-    return curves.back();
+    return best;
   }
 
  private:

@@ -19,7 +19,8 @@ const std::vector<Departure>& departures() {
        "slicing along the major axis of the portion's boundary instead of its box's longer "
        "edge",
        [](SliceLoftOptions& o) { o.surface.direction = SlicingDirection::MajorAxis; }},
-      {"plane_trimming", "trimming in the portion's plane first instead of the surface's own domain",
+      {"plane_trimming",
+       "trimming in the portion's plane first instead of the surface's own domain",
        [](SliceLoftOptions& o) { o.tessellation.plane_first = true; }},
   };
   return list;
