@@ -47,9 +47,7 @@ struct FeatureLines {
 enum class ControlPoints { CrestPoints, TangentLine };
 
 struct InterpolationOptions {
-  /// Still the project's TangentLine: switching to the paper's CrestPoints is left open (issue 47
-  /// note).
-  ControlPoints control_points = ControlPoints::TangentLine;
+  ControlPoints control_points = ControlPoints::CrestPoints;
   /// At least this many segments per feature line (>= 2, so that a line always has an
   /// interpolated point and never coincides with an existing edge).
   int min_segments = 2;

@@ -89,6 +89,17 @@ Crossing nearest_edge_crossing(const Mesh& mesh, const Hole& hole, const Point& 
   return best;
 }
 
+// Whether the segment p q lies along the line (e, t): both ends within `fraction` of its
+// length of the line.
+bool along_line(const Point& p, const Point& q, const Point& e, const Point& t, double fraction) {
+  const double tolerance = fraction * (q - p).norm();
+  auto off = [&](const Point& x) {
+    const Point d = x - e;
+    return (d - t * OpenMesh::dot(d, t)).norm();
+  };
+  return off(p) <= tolerance && off(q) <= tolerance;
+}
+
 // The feature point where the ray from the crest line's end `e` along `t` crosses the
 // boundary (3.4.1): inside the nearest edge, or at its vertex where the crossing lies within
 // `edge_snap_fraction` of it; nullopt where no edge comes within `ray_tolerance_edges` a.
@@ -102,7 +113,13 @@ std::optional<FeaturePoint> edge_candidate(const Mesh& mesh, const Hole& hole, c
   const int n = static_cast<int>(hole.vertices.size());
   FeaturePoint f;
   f.loop_index = x.edge;
-  if (x.u >= 1.0 - options.edge_snap_fraction)
+  const Point p0 = mesh.point(hole.vertices[x.edge]);
+  const Point q0 = mesh.point(hole.vertices[(x.edge + 1) % n]);
+  if (along_line(p0, q0, e, t, options.edge_snap_fraction)) {
+    // The boundary runs along the line here: no single crossing; the caller walks to the
+    // vertex where the line leaves the boundary and enters the hole (last_vertex_along).
+    f.loop_index = OpenMesh::dot(q0 - p0, t) < 0 ? (x.edge + 1) % n : x.edge;
+  } else if (x.u >= 1.0 - options.edge_snap_fraction)
     f.loop_index = (x.edge + 1) % n;
   else if (x.u > options.edge_snap_fraction)
     f.edge_parameter = x.u;
@@ -234,9 +251,15 @@ HoleFeatures detect_feature_points(const Mesh& mesh, const Hole& hole, const Cre
       const double weight = crest.lines[l].mean_curvature * static_cast<double>(near.size());
       if (options.on_boundary_edges) {
         // 3.4.1: where the extrapolated line crosses a boundary edge.
-        if (auto c = edge_candidate(mesh, hole, e, tangent, options))
+        if (auto c = edge_candidate(mesh, hole, e, tangent, options)) {
+          if (!c->edge_parameter) {  // at a vertex: where the boundary follows the line, its end
+            c->loop_index = last_vertex_along(mesh, hole, c->loop_index, e, tangent,
+                                              options.edge_snap_fraction);
+            c->position = mesh.point(hole.vertices[c->loop_index]);
+          }
           candidates.push_back({c->loop_index, tangent, static_cast<int>(l), weight, c->position,
                                 c->edge_parameter});
+        }
         continue;
       }
       // The boundary vertex the extrapolated line passes nearest, ahead of the end; of

@@ -42,11 +42,11 @@ struct FeaturePointOptions {
   /// into that edge (boundary_edge_split.h): the paper's "intersection point between the
   /// crest line ... with the hole boundary", the default. Off (the project's option, in
   /// crest_feature_plus): the boundary vertex nearest the ray, within `ray_tolerance_edges`.
-  /// On, the moved points change the partition of some holes, whose planarity cuts then give
-  /// self-intersecting patches (crease/fandisk/2 without a user: 12 face pairs;
-  /// docs/crest_feature.md).
-  /// Still off by default: switching to the paper's reading is left open (issue 47 note).
-  bool on_boundary_edges = false;
+  /// Where the boundary runs along the ray, its edges hold no single crossing: the feature
+  /// point is the vertex where the line enters the hole, as below (before this rule, the
+  /// first edge along the ray was taken and its sub-hole folded: 5 to 38 intersecting face
+  /// pairs on crease/fandisk/1-3).
+  bool on_boundary_edges = true;
   /// A crossing within this fraction of the edge's length from one of its vertices is that
   /// vertex (no sliver triangles). Also: where the hole's boundary runs along a crest line's
   /// ray (each next boundary vertex ahead and within this fraction of its edge's length of

@@ -70,12 +70,19 @@ TEST(CrestFeatureFeaturePoints, RayThroughBothEndsOfACreaseGivesTheNearerVertex)
 // hole (a line along y = 0 from the left reaches the boundary at (0,0), which then runs along
 // it to (2,0)), the feature point is the last boundary vertex on the line: a feature line from
 // the first would run along the boundary's own edges and fold the sub-hole beside it.
+// So it is with the paper's boundary crossings (on_boundary_edges, the default) and with the
+// nearest vertex (crest_feature_plus): the boundary's edges along the line hold no crossing.
 TEST(CrestFeatureFeaturePoints, BoundaryAlongTheCreaseGivesTheVertexWhereItEntersTheHole) {
   const SquareHole s = square_hole();
-  const HoleFeatures f = detect_feature_points(
-      s.mesh, s.hole, one_line(Point(-5, 0, 0), Point(0, 0, 0)), FeaturePointOptions{});
-  ASSERT_EQ(f.points.size(), 1u);
-  EXPECT_EQ(f.points[0].loop_index, 5);
+  for (bool on_edges : {true, false}) {
+    FeaturePointOptions options;
+    options.on_boundary_edges = on_edges;
+    const HoleFeatures f =
+        detect_feature_points(s.mesh, s.hole, one_line(Point(-5, 0, 0), Point(0, 0, 0)), options);
+    ASSERT_EQ(f.points.size(), 1u) << on_edges;
+    EXPECT_EQ(f.points[0].loop_index, 5) << on_edges;
+    EXPECT_FALSE(f.points[0].edge_parameter) << on_edges;
+  }
 }
 
 // cad/joint/edge_convex/small: the jet-fitted ridges beside this convex crease reach the hole

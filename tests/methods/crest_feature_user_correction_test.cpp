@@ -173,9 +173,7 @@ TEST(FeaturePointsOnBoundaryEdges, CrestLineCrossingABoundaryEdgeGivesAFeaturePo
     line.points.push_back(x - into * (0.5 * a * m));
   crest.lines.push_back(line);
 
-  FeaturePointOptions on_edges;
-  on_edges.on_boundary_edges = true;
-  const HoleFeatures features = detect_feature_points(c.input, hole, crest, on_edges);
+  const HoleFeatures features = detect_feature_points(c.input, hole, crest);  // the paper's
   ASSERT_EQ(features.points.size(), 1u);
   const FeaturePoint& f = features.points[0];
   EXPECT_EQ(f.loop_index, k);
@@ -209,8 +207,10 @@ TEST(FeaturePointsOnBoundaryEdges, CrestLineCrossingABoundaryEdgeGivesAFeaturePo
     EXPECT_EQ(mesh.next_halfedge_handle(loop[i]), loop[(i + 1) % loop.size()]);
   }
 
-  // Off (the default): the boundary vertex nearest the ray, nothing to insert.
-  const HoleFeatures snapped = detect_feature_points(c.input, hole, crest);
+  // Off (crest_feature_plus): the boundary vertex nearest the ray, nothing to insert.
+  FeaturePointOptions on_vertices;
+  on_vertices.on_boundary_edges = false;
+  const HoleFeatures snapped = detect_feature_points(c.input, hole, crest, on_vertices);
   ASSERT_EQ(snapped.points.size(), 1u);
   EXPECT_FALSE(snapped.points[0].edge_parameter);
   EXPECT_EQ(snapped.points[0].position, c.input.point(hole.vertices[snapped.points[0].loop_index]));

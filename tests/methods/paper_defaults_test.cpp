@@ -64,6 +64,18 @@ TEST(PaperDefaults, SliceLoftPlusTakesEveryDepartureAndTheAblationOneEach) {
   }
 }
 
+TEST(PaperDefaults, CrestFeatureTakesTheCrestPointsAndTheBoundaryCrossing) {
+  const auto method = make_method("crest_feature");
+  const auto& o = dynamic_cast<const CrestFeatureMethod*>(method.get())->crest_options();
+  // 3.4.3: "the pair of feature points on the hole boundary and their adjacent crest points
+  // make four initial control points".
+  EXPECT_EQ(o.interpolation.control_points, crest_feature::ControlPoints::CrestPoints);
+  // 3.4.1: the feature point is "the intersection point between the crest line ... with the
+  // hole boundary", inserted into the boundary edge it crosses.
+  EXPECT_TRUE(o.feature_points.on_boundary_edges);
+  EXPECT_NE(make_method("crest_feature")->options(), make_method("crest_feature_plus")->options());
+}
+
 TEST(PaperDefaults, CrestFeaturePlusTakesTheTangentLineAndTheNearestVertex) {
   const auto plus = make_method("crest_feature_plus");
   const auto& p = dynamic_cast<const CrestFeatureMethod*>(plus.get())->crest_options();
