@@ -1,8 +1,8 @@
 // holebench: the command line of the benchmark. Each subcommand is a file in harness/cli/;
 // main() adds them and dispatches.
 #include "harness/cli/subcommands.h"
+#include "harness/results/output_folder_lock.h"
 #include "harness/run/huge_page_heap.h"
-#include "harness/run/output_folder_lock.h"
 
 #include <CLI/CLI.hpp>
 #include <OpenMesh/Core/System/omstream.hh>

@@ -1,11 +1,11 @@
 // holebench run: a suite, or cases x methods x users x noise x seeds, into a folder.
 #include "harness/cli/common_flags.h"
 #include "harness/cli/subcommands.h"
-#include "harness/cluster/shard.h"
-#include "harness/outputs/run_summary_table.h"
 #include "harness/run/memory_limit.h"
 #include "harness/run/resolve_run_options.h"
 #include "harness/run/run_jobs.h"
+#include "harness/run/run_summary_table.h"
+#include "harness/run/shard.h"
 #include "methods/external/external_method_spec.h"
 
 #include <fmt/format.h>

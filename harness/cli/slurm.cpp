@@ -1,9 +1,9 @@
 // holebench slurm submit | status | resubmit: a suite as a Slurm job array, one task a shard.
 #include "harness/cli/common_flags.h"
 #include "harness/cli/subcommands.h"
-#include "harness/cluster/shard.h"
 #include "harness/cluster/shard_status.h"
 #include "harness/cluster/slurm_submit.h"
+#include "harness/run/shard.h"
 
 #include <fmt/format.h>
 

@@ -3,7 +3,7 @@
 #include "core/atomic_file.h"
 
 #include "core/errors.h"
-#include "harness/cluster/shard.h"
+#include "harness/run/shard.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 #include "harness/cluster/shard_merge.h"
 
 #include "harness/results/merge_results.h"
+#include "harness/results/output_folder_lock.h"
 #include "harness/results/results_file.h"
-#include "harness/run/output_folder_lock.h"
 #include "harness/run/process_pool.h"
 
 #include <map>

@@ -32,9 +32,9 @@ struct ShardMergeResult {
 
 /// Merges the shards of `options.dir` into `out_dir`/results.json and results.csv. Writes
 /// nothing (written = false) when a shard is not complete, unless `allow_incomplete`. Holds
-/// `out_dir`'s lock while it writes (harness/run/output_folder_lock.h): throws OutputFolderInUse
-/// when another process holds it.
-/// Throws InvalidInputError if `dir` is not a sharded run's folder.
+/// `out_dir`'s lock while it writes (harness/results/output_folder_lock.h): throws
+/// OutputFolderInUse when another process holds it. Throws InvalidInputError if `dir` is not a
+/// sharded run's folder.
 ShardMergeResult merge_shards(const ShardMergeOptions& options);
 
 }  // namespace holebench::harness

@@ -1,7 +1,7 @@
 #include "harness/cluster/shard_status.h"
 
-#include "harness/cluster/shard.h"
 #include "harness/run/process_pool.h"
+#include "harness/run/shard.h"
 
 #include <fmt/format.h>
 

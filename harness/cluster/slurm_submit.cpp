@@ -2,10 +2,10 @@
 
 #include "core/errors.h"
 #include "generators/case_catalog.h"
-#include "harness/cluster/shard.h"
 #include "harness/cluster/shard_manifest.h"
 #include "harness/cluster/shard_status.h"
 #include "harness/run/run_jobs.h"
+#include "harness/run/shard.h"
 #include "harness/run/suite.h"
 
 #include <fmt/format.h>

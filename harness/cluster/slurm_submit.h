@@ -1,5 +1,5 @@
 // `holebench slurm submit` and `slurm resubmit`: a suite run as a Slurm job array, one task
-// per shard (harness/cluster/shard.h). Slurm does the scheduling; each task is a plain
+// per shard (harness/run/shard.h). Slurm does the scheduling; each task is a plain
 // `holebench run --shard I/N --resume` into DIR/shard-I, so a resubmitted shard keeps the
 // jobs it had finished. Writes the manifest (harness/cluster/shard_manifest.h) and the sbatch
 // script, then calls sbatch; a dry run writes both and prints the sbatch command instead.

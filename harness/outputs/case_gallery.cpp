@@ -4,8 +4,8 @@
 #include "core/labels_summary.h"
 #include "harness/outputs/case_export.h"
 #include "harness/outputs/file_names.h"
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/case_view.h"
+#include "harness/results/markup_escape.h"
 
 #include <fmt/format.h>
 

@@ -3,10 +3,10 @@
 #include "core/atomic_file.h"
 #include "core/split_text.h"
 #include "harness/outputs/file_bytes.h"
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/bitmap_text.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/image.h"
+#include "harness/results/markup_escape.h"
 
 #include <fmt/format.h>
 

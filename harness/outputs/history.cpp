@@ -2,10 +2,10 @@
 
 #include "core/atomic_file.h"
 
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/report/leaderboard.h"
 #include "harness/outputs/report/summary_table.h"
 #include "harness/results/compare.h"
+#include "harness/results/markup_escape.h"
 
 #include <fmt/format.h>
 

@@ -2,11 +2,11 @@
 
 #include "generators/case_catalog.h"
 #include "harness/outputs/crest_paper_figures.h"
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/report/summary_table.h"
 #include "harness/outputs/slice_ablation_table.h"
 #include "harness/outputs/slice_paper_figures.h"
+#include "harness/results/markup_escape.h"
 #include "harness/results/run_context.h"
 #include "methods/registry.h"
 #include "metrics/metric_names.h"

@@ -1,7 +1,7 @@
 #include "harness/outputs/slice_ablation_table.h"
 
 #include "core/statistics.h"
-#include "harness/outputs/markup_escape.h"
+#include "harness/results/markup_escape.h"
 #include "methods/slice_loft/slice_loft_variants.h"
 #include "metrics/metric_names.h"
 
@@ -37,6 +37,14 @@ std::map<std::string, const JobRecord*> by_job(const ResultsData& data, const st
   return jobs;
 }
 
+// Whether the record is the method's own result: the job ran to the end and no hole went to
+// a stand-in (a fallback's patch is not the loft's, nor direct tessellation's).
+bool own_result(const JobRecord& r) {
+  return r.status == JobStatus::Ok &&
+         std::none_of(r.holes.begin(), r.holes.end(),
+                      [](const HoleRecord& h) { return !h.fallback.empty(); });
+}
+
 }  // namespace
 
 std::vector<SliceAblationPair> slice_ablation_pairs() {
@@ -66,6 +74,10 @@ std::vector<SliceAblationRow> slice_ablation_rows(const ResultsData& data) {
           const auto d = direct.find(key);
           if (d == direct.end() || l->job.noise_percent != noise)
             continue;
+          if (!own_result(*l) || !own_result(*d->second)) {
+            ++row.left_out;
+            continue;
+          }
           const double* x = l->metric(metric);
           const double* y = d->second->metric(metric);
           if (!x || !y)
@@ -76,12 +88,14 @@ std::vector<SliceAblationRow> slice_ablation_rows(const ResultsData& data) {
           row.loft_better += *x < *y ? 1 : 0;
           row.direct_better += *y < *x ? 1 : 0;
         }
-        if (a.empty())
+        if (a.empty() && row.left_out == 0)
           continue;
         row.holes = a.size();
-        row.loft_median = median_of(a);
-        row.direct_median = median_of(b);
-        row.p_value = wilcoxon_signed_rank(differences).p_value;
+        if (!a.empty()) {
+          row.loft_median = median_of(a);
+          row.direct_median = median_of(b);
+          row.p_value = wilcoxon_signed_rank(differences).p_value;
+        }
         rows.push_back(row);
       }
     }
@@ -92,20 +106,22 @@ std::vector<SliceAblationRow> slice_ablation_rows(const ResultsData& data) {
 std::vector<std::filesystem::path> write_slice_ablation_table(
     const ResultsData& data, const std::filesystem::path& out_dir) {
   std::string md =
-      "| setting | noise % | measure | holes | slice_loft median | slice_direct median | loft "
-      "better | direct better | p |\n|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
+      "| setting | noise % | measure | jobs | left out | slice_loft median | slice_direct median "
+      "| loft better | direct better | p |\n|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& row : slice_ablation_rows(data)) {
-    md +=
-        fmt::format("| {} (`{}` / `{}`) | {:g} | {} | {} | {:.3e} | {:.3e} | {} | {} | {:.2g} |\n",
-                    markdown_cell(row.pair.setting), row.pair.loft, row.pair.direct,
-                    row.noise_percent, row.measure, row.holes, row.loft_median, row.direct_median,
-                    row.loft_better, row.direct_better, row.p_value);
+    md += fmt::format(
+        "| {} (`{}` / `{}`) | {:g} | {} | {} | {} | {:.3e} | {:.3e} | {} | {} | {:.2g} |\n",
+        markdown_cell(row.pair.setting), row.pair.loft, row.pair.direct, row.noise_percent,
+        row.measure, row.holes, row.left_out, row.loft_median, row.direct_median, row.loft_better,
+        row.direct_better, row.p_value);
   }
   md +=
       "\nThe slice paper's Table 2 settled by ablation: the lofted patch (slice_loft) against "
       "direct tessellation of the same slice points (slice_direct), with the paper's steps, with "
       "one departure of the project's each, and with all of them (docs/slice_loft.md). Per row: "
-      "the jobs (same case, noise, seed and user) on which both methods have the measure; the "
+      "the jobs (same case, noise, seed and user) on which both methods have the measure and "
+      "gave their own result; left out, the jobs where either failed or handed a hole to a "
+      "named fallback (its patch is neither a loft nor a direct tessellation); the "
       "medians over them (relative to the bounding-box diagonal); how many jobs each method is "
       "nearer on; and the two-sided Wilcoxon signed-rank p-value of the differences loft - "
       "direct (as the report's leaderboard). Lower is better for every measure. Run `holebench "

@@ -27,7 +27,8 @@ struct SliceAblationRow {
   SliceAblationPair pair;
   double noise_percent = 0.0;
   std::string measure;
-  std::size_t holes = 0;     ///< jobs with the measure on both sides
+  std::size_t holes = 0;     ///< jobs with the measure on both sides, each the method's own
+  std::size_t left_out = 0;  ///< jobs on both sides where either failed or used a fallback
   double loft_median = 0.0;  ///< over those jobs
   double direct_median = 0.0;
   std::size_t loft_better = 0;    ///< jobs where the loft's value is lower

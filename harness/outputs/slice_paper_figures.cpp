@@ -3,8 +3,8 @@
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/figure_run.h"
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/layers_picture.h"
+#include "harness/results/markup_escape.h"
 #include "metrics/metric_names.h"
 
 #include <fmt/format.h>

@@ -4,7 +4,7 @@
 // prints it; the README's nightly table and the speed figures of docs/ are read off it.
 #pragma once
 
-#include "harness/run/job.h"
+#include "harness/results/record.h"
 
 #include <cstddef>
 #include <string>

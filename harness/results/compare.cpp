@@ -1,6 +1,7 @@
 #include "harness/results/compare.h"
+#include "harness/run/suite.h"  // comparison_tolerances reads the suites (to move up: issue 51)
 
-#include "harness/outputs/markup_escape.h"
+#include "harness/results/markup_escape.h"
 
 #include <fmt/format.h>
 

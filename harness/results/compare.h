@@ -5,9 +5,9 @@
 // The rules (regression, zero handling) are in docs/reports.md.
 #pragma once
 
+#include "harness/results/record.h"
 #include "harness/results/results_reader.h"
-#include "harness/run/job.h"
-#include "harness/run/suite.h"
+#include "harness/results/tolerances.h"
 
 #include <cstdio>
 #include <filesystem>

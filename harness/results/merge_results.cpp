@@ -1,7 +1,7 @@
 #include "harness/results/merge_results.h"
 
+#include "harness/results/output_folder_lock.h"
 #include "harness/results/results_file.h"
-#include "harness/run/output_folder_lock.h"
 
 #include <map>
 

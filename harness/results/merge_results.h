@@ -28,7 +28,7 @@ struct MergedFiles {
 /// Reads the results.json `files`, makes each record's snapshot path relative to `out_dir`
 /// (the report finds the pictures), merges them (merge_results) and writes
 /// out_dir/results.json and out_dir/results.csv. Holds the folder's lock meanwhile
-/// (harness/run/output_folder_lock.h): throws OutputFolderInUse, before reading anything, when
+/// (harness/results/output_folder_lock.h): throws OutputFolderInUse, before reading anything, when
 /// another process holds it; throws InvalidInputError naming a file that cannot be read.
 MergedFiles merge_results_files(const std::vector<std::filesystem::path>& files,
                                 const std::filesystem::path& out_dir);

@@ -3,8 +3,8 @@
 // ones (results written by an older holebench still read).
 #pragma once
 
+#include "harness/results/record.h"
 #include "harness/results/run_context.h"
-#include "harness/run/job.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,8 +2,8 @@
 // written as JSON (numbers as numbers) and as long-format CSV (one row per metric).
 #pragma once
 
+#include "harness/results/record.h"
 #include "harness/results/run_context.h"
-#include "harness/run/job.h"
 
 #include <filesystem>
 #include <string>

@@ -3,8 +3,8 @@
 // text, both ways: harness/results/record_json.h; merging: harness/results/merge_results.h.
 #pragma once
 
+#include "harness/results/record.h"
 #include "harness/results/results_file.h"
-#include "harness/run/job.h"
 
 #include <nlohmann/json_fwd.hpp>
 

@@ -18,8 +18,7 @@ struct RunContext {
   std::string host;
   std::string created_utc;  ///< ISO 8601
   std::string suite;
-  std::string
-      shard;  ///< "I/N" for one shard of a sharded run (harness/cluster/shard.h), else empty
+  std::string shard;  ///< "I/N" for one shard of a sharded run (harness/run/shard.h), else empty
   std::vector<std::pair<std::string, std::string>> libraries;  ///< name, version
 };
 

@@ -11,7 +11,7 @@
 // end; a job with status ok leaves no hole open that it does not guide.
 #pragma once
 
-#include "harness/run/job.h"
+#include "harness/results/record.h"
 
 #include <cstddef>
 #include <filesystem>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "core/occt/brep_mesh.h"
-#include "harness/cluster/shard.h"
 #include "harness/run/run_jobs.h"
+#include "harness/run/shard.h"
 #include "harness/run/suite.h"
 #include "methods/external/external_method_spec.h"
 

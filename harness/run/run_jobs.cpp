@@ -3,10 +3,10 @@
 #include "core/stopwatch.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/render/image.h"
+#include "harness/results/output_folder_lock.h"
 #include "harness/results/results_file.h"
 #include "harness/run/case_selection.h"
 #include "harness/run/oracle_user.h"
-#include "harness/run/output_folder_lock.h"
 #include "methods/external/predefined_external_methods.h"
 #include "methods/registry.h"
 

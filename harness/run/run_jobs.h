@@ -1,9 +1,9 @@
 // `holebench run`: every selected case x method as a job, records written to a folder.
 #pragma once
 
-#include "harness/cluster/shard.h"
 #include "harness/run/job.h"
 #include "harness/run/process_pool.h"
+#include "harness/run/shard.h"
 #include "harness/run/suite.h"
 
 #include <filesystem>
@@ -32,7 +32,7 @@ struct RunOptions {
   int workers = 0;       ///< processes at once; 0: the number of cores
   bool resume = false;   ///< keep the records already in the folder's records.jsonl
   bool progress = true;  ///< progress on stderr
-  /// The slice of the jobs to run (harness/cluster/shard.h); the default, 0/1, is every job.
+  /// The slice of the jobs to run (harness/run/shard.h); the default, 0/1, is every job.
   ShardSpec shard;
   /// Run each job in this process instead of a child process (tests; no isolation).
   bool in_process = false;
@@ -66,8 +66,8 @@ ProcessPoolOptions runner_options_of(const RunOptions& options);
 
 /// Runs the jobs of `options.shard` (isolated, in parallel: harness/run/process_pool.h) and writes
 /// records.jsonl (as jobs finish), results.json, results.csv and snapshots/ into `options.out_dir`.
-/// Holds the folder's lock meanwhile (harness/run/output_folder_lock.h): throws OutputFolderInUse,
-/// before running anything, when another process holds it.
+/// Holds the folder's lock meanwhile (harness/results/output_folder_lock.h): throws
+/// OutputFolderInUse, before running anything, when another process holds it.
 RunSummary run_jobs(const RunOptions& options);
 
 }  // namespace holebench::harness

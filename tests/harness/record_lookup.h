@@ -1,7 +1,7 @@
 // Test helpers: a job record's values by name.
 #pragma once
 
-#include "harness/run/job.h"
+#include "harness/results/record.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 
 #include "core/atomic_file.h"
 
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/report/leaderboard.h"
+#include "harness/results/markup_escape.h"
 #include "metrics/metric_names.h"
 
 #include <fmt/format.h>

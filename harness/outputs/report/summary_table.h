@@ -4,7 +4,7 @@
 // unstable rows flagged with what to do about them, every format from the same data.
 #pragma once
 
-#include "harness/outputs/markup_escape.h"  // markdown_cell, latex_escape: the tables' cells
+#include "harness/results/markup_escape.h"  // markdown_cell, latex_escape: the tables' cells
 #include "harness/results/results_reader.h"
 
 #include <cstddef>

@@ -19,7 +19,7 @@
 
 #include "core/case.h"
 #include "core/mesh.h"
-#include "harness/run/job.h"
+#include "harness/results/record.h"
 
 #include <filesystem>
 #include <optional>

@@ -1,11 +1,11 @@
 #include "harness/outputs/viewer/viewer_page.h"
 
 #include "harness/outputs/file_bytes.h"
-#include "harness/outputs/markup_escape.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/heat_map.h"
 #include "harness/outputs/viewer/viewer_mesh.h"
 #include "harness/outputs/viewer/viewer_script.h"
+#include "harness/results/markup_escape.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -3,12 +3,12 @@
 // merged records come in plan order under an unsharded context.
 #include "harness/cluster/shard_merge.h"
 
-#include "harness/cluster/shard.h"
 #include "harness/cluster/shard_manifest.h"
 #include "harness/cluster/shard_status.h"
+#include "harness/results/output_folder_lock.h"
 #include "harness/results/record_json.h"
 #include "harness/results/results_file.h"
-#include "harness/run/output_folder_lock.h"
+#include "harness/run/shard.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "harness/run/output_folder_lock.h"
+#include "harness/results/output_folder_lock.h"
 
 #include <fcntl.h>
 #include <pthread.h>

@@ -1,6 +1,6 @@
-// The plain data of harness/run/job.h (a job's id, a record's metric lookup, the names of the
-// statuses), apart from run_job, so that the results readers need nothing but this.
-#include "harness/run/job.h"
+// The functions of the record's plain data (record.h): a job's id, a record's metric lookup,
+// the names of the statuses.
+#include "harness/results/record.h"
 
 #include "core/split_text.h"
 

@@ -1,4 +1,4 @@
-#include "harness/outputs/markup_escape.h"
+#include "harness/results/markup_escape.h"
 
 #include <gtest/gtest.h>
 

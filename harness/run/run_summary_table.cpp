@@ -1,4 +1,4 @@
-#include "harness/outputs/run_summary_table.h"
+#include "harness/run/run_summary_table.h"
 #include "metrics/metric_names.h"
 
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 // Shards: parsing I/N, and the slicing of a plan: the N shards together are the plan, each
 // job exactly once, whatever N, the same on every call.
-#include "harness/cluster/shard.h"
+#include "harness/run/shard.h"
 
 #include "harness/results/results_reader.h"
 #include "harness/run/run_jobs.h"

@@ -1,10 +1,10 @@
-// One run per output folder (harness/run/output_folder_lock.h): a second lock of a locked folder
-// is refused with the holder's pid, from this process or another; the lock goes with its
+// One run per output folder (harness/results/output_folder_lock.h): a second lock of a locked
+// folder is refused with the holder's pid, from this process or another; the lock goes with its
 // holder however the holder ends (SIGKILL included), and children the holder forks do not
 // keep it. End to end with the holebench binary: a second `holebench run` into a folder in
 // use exits with code 2 naming the holder, and once the holder is killed a `--resume` run
 // takes the folder at once.
-#include "harness/run/output_folder_lock.h"
+#include "harness/results/output_folder_lock.h"
 
 #include "harness/run/run_jobs.h"
 

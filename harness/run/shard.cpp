@@ -1,4 +1,4 @@
-#include "harness/cluster/shard.h"
+#include "harness/run/shard.h"
 
 #include <algorithm>
 #include <cctype>
