@@ -8,7 +8,7 @@
 // numbered 0 to N-1, like the tasks of `sbatch --array=0-(N-1)`; shard I of N is written "I/N".
 #pragma once
 
-#include "harness/run/job.h"
+#include "harness/results/record.h"
 
 #include <cstddef>
 #include <string>
