@@ -2,6 +2,7 @@
 #include "harness/results/compare.h"
 #include "harness/cli/subcommands.h"
 #include "harness/results/results_reader.h"
+#include "harness/run/suite.h"
 
 #include <fmt/format.h>
 

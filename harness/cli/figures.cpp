@@ -1,6 +1,6 @@
 // holebench figures: the papers' figures and tables.
 #include "harness/cli/subcommands.h"
-#include "harness/outputs/paper_figures.h"
+#include "harness/figures/paper_figures.h"
 #include "harness/results/results_reader.h"
 
 #include <fmt/format.h>

@@ -2,6 +2,7 @@
 #include "harness/outputs/history.h"
 #include "harness/cli/subcommands.h"
 #include "harness/results/results_reader.h"
+#include "harness/run/suite.h"
 
 #include <fmt/format.h>
 
@@ -17,14 +18,20 @@ namespace {
 struct HistoryFlags {
   std::vector<std::filesystem::path> files;
   std::filesystem::path out;
+  std::string suite;  ///< --suite: the suite whose tolerances judge every pair (else each run's)
   HistoryOptions options;
 };
 
 int history(const HistoryFlags& flags) {
+  HistoryOptions options = flags.options;
+  options.tolerances_of_suite = [suite = flags.suite](const std::string& named_suite,
+                                                      bool* used_defaults) {
+    return comparison_tolerances(suite, named_suite, used_defaults);
+  };
   std::vector<HistoryRun> runs;
   for (const auto& file : flags.files)
     runs.push_back({file.string(), read_results_json(file)});
-  const auto result = compute_history(std::move(runs), flags.options);
+  const auto result = compute_history(std::move(runs), options);
   for (const auto& note : result.notes)
     fmt::print(stderr, "holebench history: {}\n", note);
   std::size_t flagged = 0;
@@ -53,7 +60,7 @@ Subcommand add_history_command(CLI::App& app) {
                    "results.json files of successive runs (any order; at least one)")
       ->required();
   command->add_option("--out", flags->out, "Output folder (created)")->required();
-  command->add_option("--suite", flags->options.suite,
+  command->add_option("--suite", flags->suite,
                       "Suite whose tolerances judge regressions (default: the suite each newer "
                       "run names; without one, the built-in tolerances)");
   return {command, [flags] { return history(*flags); }};

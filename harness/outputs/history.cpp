@@ -217,9 +217,11 @@ History compute_history(std::vector<HistoryRun> runs, const HistoryOptions& opti
     }
     if (r == 0)
       continue;
-    bool used_defaults = false;
+    bool used_defaults = true;
     const auto tolerances =
-        comparison_tolerances(options.suite, history.runs[r].data.context.suite, &used_defaults);
+        options.tolerances_of_suite
+            ? options.tolerances_of_suite(history.runs[r].data.context.suite, &used_defaults)
+            : Tolerances{};
     if (used_defaults) {
       history.notes.push_back(
           fmt::format("run {} names no known suite ('{}'): judged by the built-in tolerances",

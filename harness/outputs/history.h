@@ -6,9 +6,11 @@
 #pragma once
 
 #include "harness/results/results_reader.h"
+#include "harness/results/tolerances.h"
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,10 +18,12 @@
 namespace holebench::harness {
 
 struct HistoryOptions {
-  /// The suite whose tolerances judge each consecutive pair of runs (a name or a path).
-  /// Empty: the suite the newer run's context names, else the built-in tolerances (as
-  /// `holebench compare` chooses them).
-  std::string suite;
+  /// The tolerances that judge each consecutive pair of runs, given the suite the newer run's
+  /// context names; sets `*used_defaults` where they are the built-in ones. The command line
+  /// answers from the suites as `holebench compare` does (comparison_tolerances,
+  /// harness/run/suite.h). Unset: the built-in tolerances for every pair.
+  std::function<Tolerances(const std::string& named_suite, bool* used_defaults)>
+      tolerances_of_suite;
   /// Job ids listed per marked regression (the rest are counted).
   std::size_t listed_jobs = 5;
 };

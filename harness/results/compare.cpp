@@ -1,5 +1,4 @@
 #include "harness/results/compare.h"
-#include "harness/run/suite.h"  // comparison_tolerances reads the suites (to move up: issue 51)
 
 #include "harness/results/markup_escape.h"
 
@@ -186,20 +185,6 @@ std::vector<std::string> metric_names_of(const JobRecord& a, const JobRecord& b)
 }
 
 }  // namespace
-
-Tolerances comparison_tolerances(const std::string& suite, const std::string& named_suite,
-                                 bool* used_defaults) {
-  if (used_defaults)
-    *used_defaults = false;
-  if (!suite.empty())
-    return load_suite(suite).tolerances;
-  const auto names = list_suites();
-  if (std::find(names.begin(), names.end(), named_suite) != names.end())
-    return load_suite(named_suite).tolerances;
-  if (used_defaults)
-    *used_defaults = true;
-  return Tolerances{};
-}
 
 Comparison compare_results(const ResultsData& base, const ResultsData& now,
                            const Tolerances& tolerances) {

@@ -83,13 +83,6 @@ struct Comparison {
   std::size_t regressed_jobs() const;
 };
 
-/// The tolerances that judge a comparison: those of the suite `suite` when it is not empty
-/// (a name or a path; load_suite throws for an unknown one), else those of `named_suite` (the
-/// suite a results file's context names) when it is a known suite, else the built-in
-/// defaults, and then `*used_defaults` is set (when given).
-Tolerances comparison_tolerances(const std::string& suite, const std::string& named_suite,
-                                 bool* used_defaults = nullptr);
-
 /// Compares `now` against `base`, matching records by job id (`Job::id()`). A metric is a
 /// regression when it moves the bad way (`MetricTolerance::lower_is_better`) by more than
 /// max(absolute, relative * |old|); a job whose status went from ok to anything else is a

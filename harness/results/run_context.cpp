@@ -1,13 +1,7 @@
 #include "harness/results/run_context.h"
 
-#include "harness/outputs/render/image.h"
+#include "harness/results/library_versions.h"
 #include "holebench/version.h"
-
-#include <CGAL/version.h>
-#include <OpenMesh/Core/System/config.h>
-#include <embree3/rtcore_config.h>
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
@@ -28,18 +22,7 @@ RunContext current_context(const std::string& suite) {
   std::strftime(stamp, sizeof(stamp), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   context.created_utc = stamp;
   context.suite = suite;
-  context.libraries = {
-      {"holebench", HOLEBENCH_VERSION},
-      {"CGAL", CGAL_VERSION_STR},
-      {"OpenMesh", fmt::format("{}.{}", OM_GET_VER, OM_GET_MAJ)},
-      {"Embree", RTC_VERSION_STRING},
-      {"OpenImageIO", render::openimageio_version()},
-      {"fmt",
-       fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
-      {"nlohmann_json", fmt::format("{}.{}.{}", NLOHMANN_JSON_VERSION_MAJOR,
-                                    NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)},
-      {"compiler", __VERSION__},
-  };
+  context.libraries = library_versions();
   return context;
 }
 

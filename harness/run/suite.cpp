@@ -225,4 +225,18 @@ Suite ad_hoc_suite() {
   return suite;
 }
 
+Tolerances comparison_tolerances(const std::string& suite, const std::string& named_suite,
+                                 bool* used_defaults) {
+  if (used_defaults)
+    *used_defaults = false;
+  if (!suite.empty())
+    return load_suite(suite).tolerances;
+  const auto names = list_suites();
+  if (std::find(names.begin(), names.end(), named_suite) != names.end())
+    return load_suite(named_suite).tolerances;
+  if (used_defaults)
+    *used_defaults = true;
+  return Tolerances{};
+}
+
 }  // namespace holebench::harness

@@ -65,4 +65,11 @@ Suite load_suite(const std::string& name_or_path,
 std::vector<std::string> list_suites(
     const std::filesystem::path& suites_dir = default_suites_dir());
 
+/// The tolerances that judge a comparison (harness/results/compare.h): those of the suite
+/// `suite` when it is not empty (a name or a path; load_suite throws for an unknown one), else
+/// those of `named_suite` (the suite a results file's context names) when it is a known suite,
+/// else the built-in defaults, and then `*used_defaults` is set (when given).
+Tolerances comparison_tolerances(const std::string& suite, const std::string& named_suite,
+                                 bool* used_defaults = nullptr);
+
 }  // namespace holebench::harness

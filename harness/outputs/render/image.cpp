@@ -2,8 +2,6 @@
 
 #include "harness/outputs/render/image_file_module.h"
 
-#include <OpenImageIO/oiioversion.h>  // macros only: the library is the module's
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,10 +104,6 @@ void write_png(const Image& image, const std::filesystem::path& path) {
 
 void load_png_writer() {
   image_file_module().load_png_writer();
-}
-
-const char* openimageio_version() {
-  return OIIO_VERSION_STRING;
 }
 
 }  // namespace holebench::render

@@ -46,8 +46,4 @@ void write_png(const Image& image, const std::filesystem::path& path);
 /// loading it again. Throws std::runtime_error when the module cannot be loaded.
 void load_png_writer();
 
-/// The version of OpenImageIO the module was built against, for the results' context block
-/// (from its headers: asking for it loads nothing).
-const char* openimageio_version();
-
 }  // namespace holebench::render

@@ -6,6 +6,7 @@
 #include "harness/outputs/history.h"
 
 #include "harness/results/results_file.h"
+#include "harness/run/suite.h"
 
 #include "tests/harness/text_file.h"
 
@@ -75,7 +76,11 @@ TEST(History, MarksTheRegressionOfTheChangedMethodOnly) {
   // Given out of order: the history orders them by date.
   std::vector<HistoryRun> runs{{"c", night(3, &changed)}, {"a", night(1)}, {"b", night(2)}};
   ASSERT_GT(changed, 0u);
-  const auto history = compute_history(std::move(runs));
+  HistoryOptions options;  // as the command line judges: each run by the suite it names
+  options.tolerances_of_suite = [](const std::string& named_suite, bool* used_defaults) {
+    return comparison_tolerances("", named_suite, used_defaults);
+  };
+  const auto history = compute_history(std::move(runs), options);
   ASSERT_EQ(history.runs.size(), 3u);
   EXPECT_EQ(history.runs[0].name, "a");
   EXPECT_EQ(history.runs[2].name, "c");

@@ -1,4 +1,4 @@
-#include "harness/outputs/figure_sheet.h"
+#include "harness/figures/figure_sheet.h"
 
 #include "core/atomic_file.h"
 #include "core/split_text.h"

@@ -5,7 +5,7 @@
 // output); and Table 2 with the paper's four rows and its numbers beside ours.
 #pragma once
 
-#include "harness/outputs/figure_sheet.h"
+#include "harness/figures/figure_sheet.h"
 #include "harness/results/results_reader.h"
 
 #include <filesystem>

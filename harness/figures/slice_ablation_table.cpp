@@ -1,4 +1,4 @@
-#include "harness/outputs/slice_ablation_table.h"
+#include "harness/figures/slice_ablation_table.h"
 
 #include "core/statistics.h"
 #include "harness/results/markup_escape.h"

@@ -1,9 +1,9 @@
-#include "harness/outputs/paper_figures.h"
+#include "harness/figures/paper_figures.h"
 
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/file_bytes.h"
-#include "harness/outputs/slice_paper_figures.h"
+#include "harness/figures/slice_paper_figures.h"
 #include "harness/results/results_file.h"
 
 #include <fmt/format.h>

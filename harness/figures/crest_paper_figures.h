@@ -5,7 +5,7 @@
 // figure 12 (the concave corner hole).
 #pragma once
 
-#include "harness/outputs/figure_sheet.h"
+#include "harness/figures/figure_sheet.h"
 
 #include <filesystem>
 #include <string>

@@ -1,7 +1,7 @@
-// The slice paper's Table 2 by ablation (harness/outputs/slice_ablation_table.h): each row
+// The slice paper's Table 2 by ablation (harness/figures/slice_ablation_table.h): each row
 // compares the jobs on which both methods gave their own result; a job where either failed
 // or handed a hole to a fallback is left out and counted.
-#include "harness/outputs/slice_ablation_table.h"
+#include "harness/figures/slice_ablation_table.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "harness/outputs/figure_run.h"
+#include "harness/figures/figure_run.h"
 
 #include "harness/run/oracle_user.h"
 #include "methods/common/cgal_random.h"

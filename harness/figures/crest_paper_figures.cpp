@@ -1,7 +1,7 @@
-#include "harness/outputs/crest_paper_figures.h"
+#include "harness/figures/crest_paper_figures.h"
 
 #include "generators/case_catalog.h"
-#include "harness/outputs/figure_run.h"
+#include "harness/figures/figure_run.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/layers_picture.h"
 

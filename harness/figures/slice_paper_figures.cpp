@@ -1,8 +1,8 @@
-#include "harness/outputs/slice_paper_figures.h"
+#include "harness/figures/slice_paper_figures.h"
 
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
-#include "harness/outputs/figure_run.h"
+#include "harness/figures/figure_run.h"
 #include "harness/outputs/render/layers_picture.h"
 #include "harness/results/markup_escape.h"
 #include "metrics/metric_names.h"
