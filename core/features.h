@@ -3,7 +3,7 @@
 // convexity signature of their sharp edges.
 #pragma once
 
-#include "core/case.h"
+#include "core/hole_labels.h"
 #include "core/mesh.h"
 #include "core/region_segmentation.h"
 

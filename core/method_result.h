@@ -2,7 +2,7 @@
 // it), so that neither has to include the other.
 #pragma once
 
-#include "core/case.h"
+#include "core/hole_labels.h"
 #include "core/mesh.h"
 #include "core/method_layers.h"
 

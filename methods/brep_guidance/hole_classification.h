@@ -3,7 +3,7 @@
 // equation 4), the size of a hole, and the decision against the structure size delta_s.
 #pragma once
 
-#include "core/case.h"
+#include "core/hole_labels.h"
 #include "methods/brep_guidance/hole_detection.h"
 
 #include <vector>

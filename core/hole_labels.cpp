@@ -1,4 +1,4 @@
-#include "core/case.h"
+#include "core/hole_labels.h"
 
 namespace holebench {
 
