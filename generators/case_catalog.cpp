@@ -2,9 +2,9 @@
 
 #include "core/errors.h"
 #include "core/geometry.h"
-#include "core/split_text.h"
 #include "generators/box_holes.h"
 #include "generators/brep/brep_cases.h"
+#include "generators/case_id.h"
 #include "generators/crease_holes.h"
 #include "generators/face_removal.h"
 #include "generators/procedural_solids.h"
@@ -18,6 +18,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 
 namespace holebench::generators {
@@ -126,64 +127,92 @@ struct CaseCatalog::State {
   }
 
   // Makes a case from its id alone: only the model it names is loaded.
-  Case make_direct(const std::string& id) const {
-    const std::vector<std::string> parts = split_text(id, '/');
-    const std::string& family = parts[0];
-    if (family == "box" && parts.size() == 2) {
-      for (auto target :
-           {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
-        if (parts[1] != to_string(target))
-          continue;
-        BoxHoleOptions box;
-        box.target = target;
-        return make_box_hole_case(box);
+  Case make_direct(const std::string& text) const {
+    if (const auto id = parse_case_id(text)) {
+      switch (id->kind) {
+        case CaseIdKind::Box:
+          if (auto c = make_box(*id))
+            return std::move(*c);
+          break;
+        case CaseIdKind::Brep:
+          return make_brep_case(id->text);
+        case CaseIdKind::Crease:
+          if (auto c = make_crease(*id))
+            return std::move(*c);
+          break;
+        case CaseIdKind::FacesRemoved:
+          if (auto c = make_faces_removed(*id))
+            return std::move(*c);
+          break;
+        case CaseIdKind::Punched:
+          if (auto c = make_punched_by_id(*id))
+            return std::move(*c);
+          break;
       }
     }
-    if (family == "brep")
-      return make_brep_case(id);
-    if (family == "crease" && parts.size() == 3 && options.include_cad) {
-      if (parts[2] == "concave_corner") {
-        if (auto load = loader("cad", parts[1])) {
-          CreaseHoleOptions concave;
-          concave.concave_corner = true;
-          return make_crease_hole_case(*load(), 3, id, concave);
-        }
-      }
-      for (const auto& creases : {"1", "2", "3"}) {
-        if (parts[2] != creases)
-          continue;
-        if (auto load = loader("cad", parts[1]))
-          return make_crease_hole_case(*load(), std::stoi(parts[2]), id);
+    throw std::invalid_argument("unknown case id '" + text + "' (see `holebench cases list`)");
+  }
+
+  static std::optional<Case> make_box(const CaseId& id) {
+    for (auto target : {BoxHoleTarget::FaceInterior, BoxHoleTarget::Edge, BoxHoleTarget::Corner}) {
+      if (id.target != to_string(target))
+        continue;
+      BoxHoleOptions box;
+      box.target = target;
+      return make_box_hole_case(box);
+    }
+    return std::nullopt;
+  }
+
+  std::optional<Case> make_crease(const CaseId& id) const {
+    if (!options.include_cad)
+      return std::nullopt;
+    if (id.target == "concave_corner") {
+      if (auto load = loader("cad", id.model)) {
+        CreaseHoleOptions concave;
+        concave.concave_corner = true;
+        return make_crease_hole_case(*load(), 3, id.text, concave);
       }
     }
-    if (family == "file" && parts.size() == 4 && parts[2] == "faces") {
-      const auto faces = parse_face_set_name(parts[3]);
-      if (faces) {
-        if (auto load = loader(family, parts[1])) {
-          Case c = make_face_removal_case(*load(), *faces, kStructureSizeRelDiag);
-          c.id = id;
-          c.family = family;
-          return c;
-        }
+    for (const auto& creases : {"1", "2", "3"}) {
+      if (id.target != creases)
+        continue;
+      if (auto load = loader("cad", id.model))
+        return make_crease_hole_case(*load(), std::stoi(id.target), id.text);
+    }
+    return std::nullopt;
+  }
+
+  std::optional<Case> make_faces_removed(const CaseId& id) const {
+    const auto faces = parse_face_set_name(id.target);
+    if (!faces)
+      return std::nullopt;
+    auto load = loader(id.family, id.model);
+    if (!load)
+      return std::nullopt;
+    Case c = make_face_removal_case(*load(), *faces, kStructureSizeRelDiag);
+    c.id = id.text;
+    c.family = id.family;
+    return c;
+  }
+
+  std::optional<Case> make_punched_by_id(const CaseId& id) const {
+    auto load = loader(id.family, id.model);
+    if (!load)
+      return std::nullopt;
+    const auto model = load();  // throws InvalidInputError for an unusable model
+    std::vector<PunchTarget> targets = find_punch_targets(*model);
+    if (is_gear_model(id.family, id.model))
+      targets.push_back(find_gear_tooth_target(*model));
+    for (const auto& target : targets) {
+      if (target.kind != id.target)
+        continue;
+      for (const auto& size : punch_size_classes()) {
+        if (size.name == id.size)
+          return make_punched(*model, target, size, id.text, id.family);
       }
     }
-    if (parts.size() == 4) {
-      if (auto load = loader(family, parts[1])) {
-        const auto model = load();  // throws InvalidInputError for an unusable model
-        std::vector<PunchTarget> targets = find_punch_targets(*model);
-        if (is_gear_model(family, parts[1]))
-          targets.push_back(find_gear_tooth_target(*model));
-        for (const auto& target : targets) {
-          if (target.kind != parts[2])
-            continue;
-          for (const auto& size : punch_size_classes()) {
-            if (size.name == parts[3])
-              return make_punched(*model, target, size, id, family);
-          }
-        }
-      }
-    }
-    throw std::invalid_argument("unknown case id '" + id + "' (see `holebench cases list`)");
+    return std::nullopt;
   }
 
   bool listed_family(const std::string& family) const {
