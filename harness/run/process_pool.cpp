@@ -363,6 +363,86 @@ JobRecord unfinished_group_record(const RunningGroup& group, const Job& job, int
                      : "stopped after the time limit while making its case");
 }
 
+// Opens the records file for appending: with `resume`, the records already in it are read into
+// `done` (and a line cut short by an interruption is ended, so that the next record starts a
+// line); else it is started afresh. Returns its descriptor.
+int open_records_file(const std::filesystem::path& records_path, bool resume,
+                      std::map<std::string, JobRecord>& done) {
+  if (resume) {
+    for (auto& record : read_records_jsonl(records_path))
+      done[record.job.id()] = std::move(record);
+  } else {
+    std::filesystem::remove(records_path);
+  }
+  const int fd = ::open(records_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw std::runtime_error("cannot write " + records_path.string() + ": " + std::strerror(errno));
+  std::ifstream existing(records_path, std::ios::binary | std::ios::ate);
+  if (existing && existing.tellg() > 0) {
+    existing.seekg(-1, std::ios::end);
+    if (existing.get() != '\n')
+      append_record(fd, "\n", records_path);
+  }
+  return fd;
+}
+
+// The jobs still to run (not in `done`), in groups of equal `group_of` key (each alone
+// without one), in the order of each group's first job, as indices into `jobs`; counts the
+// jobs found done in `*resumed`.
+std::vector<std::vector<std::size_t>> group_pending_jobs(
+    const std::vector<Job>& jobs, const std::map<std::string, JobRecord>& done,
+    const GroupKeyFunction& group_of, std::size_t* resumed) {
+  std::vector<std::vector<std::size_t>> groups;
+  std::map<std::string, std::size_t> group_by_key;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    if (done.count(jobs[i].id())) {
+      ++*resumed;
+      continue;
+    }
+    if (!group_of) {
+      groups.push_back({i});
+      continue;
+    }
+    const auto [it, added] = group_by_key.emplace(group_of(jobs[i]), groups.size());
+    if (added)
+      groups.emplace_back();
+    groups[it->second].push_back(i);
+  }
+  return groups;
+}
+
+// Starts the process of a group of jobs (indices into `jobs`): it prepares their case once and
+// runs each job in a child of its own (run_group).
+RunningGroup start_group(const std::vector<Job>& jobs, const std::vector<std::size_t>& indices,
+                         const GroupFunction& prepare, const ProcessPoolOptions& options) {
+  RunningGroup group;
+  group.job_indices = indices;
+  std::vector<Job> group_jobs;
+  for (std::size_t index : group.job_indices)
+    group_jobs.push_back(jobs[index]);
+  group.process =
+      start_child_process([&group_jobs, &prepare, &options](
+                              int group_fd) { run_group(group_jobs, prepare, options, group_fd); },
+                          options.memory_limit_bytes);
+  group.last_progress = Clock::now();
+  return group;
+}
+
+// The record a group's process sent for `job` as a line; where it does not read back, an
+// error record saying so.
+JobRecord record_of_line(const std::string& line, const Job& job) {
+  try {
+    return record_from_json_text(line);
+  } catch (const std::exception& e) {
+    JobRecord record;
+    record.job = job;
+    record.user = job.user;
+    record.status = JobStatus::Error;
+    record.message = std::string("the job's record did not read back: ") + e.what();
+    return record;
+  }
+}
+
 class Progress {
  public:
   /// `already_done`: jobs kept from an earlier run (--resume): counted as done, but not
@@ -426,44 +506,11 @@ ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFuncti
   const auto start = Clock::now();
   ProcessPoolResult result;
   std::map<std::string, JobRecord> done;
-  if (options.resume) {
-    for (auto& record : read_records_jsonl(records_path))
-      done[record.job.id()] = std::move(record);
-  } else {
-    std::filesystem::remove(records_path);
-  }
-  const int fd = ::open(records_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw std::runtime_error("cannot write " + records_path.string() + ": " + std::strerror(errno));
-  // A line cut short by an interruption is ended, so that the next record starts a line.
-  {
-    std::ifstream existing(records_path, std::ios::binary | std::ios::ate);
-    if (existing && existing.tellg() > 0) {
-      existing.seekg(-1, std::ios::end);
-      if (existing.get() != '\n')
-        append_record(fd, "\n", records_path);
-    }
-  }
-
-  // The jobs still to run, in groups (in the order of each group's first job).
-  std::vector<std::vector<std::size_t>> groups;
-  std::map<std::string, std::size_t> group_by_key;
+  const int fd = open_records_file(records_path, options.resume, done);
+  const auto groups = group_pending_jobs(jobs, done, group_of, &result.resumed);
   std::set<std::string> wanted;
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    wanted.insert(jobs[i].id());
-    if (done.count(jobs[i].id())) {
-      ++result.resumed;
-      continue;
-    }
-    if (!group_of) {
-      groups.push_back({i});
-      continue;
-    }
-    const auto [it, added] = group_by_key.emplace(group_of(jobs[i]), groups.size());
-    if (added)
-      groups.emplace_back();
-    groups[it->second].push_back(i);
-  }
+  for (const auto& job : jobs)
+    wanted.insert(job.id());
   const int workers = worker_count_of(options.workers);
   Progress progress(jobs.size(), result.resumed, options.progress);
   std::size_t finished = result.resumed;
@@ -496,18 +543,8 @@ ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFuncti
       if (group.records_received >= group.job_indices.size())
         continue;
       const Job& job = jobs[group.job_indices[group.records_received]];
-      JobRecord record;
-      try {
-        record = record_from_json_text(line);
-      } catch (const std::exception& e) {
-        record = JobRecord{};
-        record.job = job;
-        record.user = job.user;
-        record.status = JobStatus::Error;
-        record.message = std::string("the job's record did not read back: ") + e.what();
-      }
       ++group.records_received;
-      take(std::move(record));
+      take(record_of_line(line, job));
     }
     output.erase(0, line_start);
   };
@@ -515,21 +552,8 @@ ProcessPoolResult run_grouped(const std::vector<Job>& jobs, const GroupKeyFuncti
   std::vector<RunningGroup> running;
   std::size_t next = 0;
   while (next < groups.size() || !running.empty()) {
-    while (next < groups.size() && static_cast<int>(running.size()) < workers) {
-      RunningGroup group;
-      group.job_indices = groups[next];
-      std::vector<Job> group_jobs;
-      for (std::size_t index : group.job_indices)
-        group_jobs.push_back(jobs[index]);
-      group.process = start_child_process(
-          [&group_jobs, &prepare, &options](int group_fd) {
-            run_group(group_jobs, prepare, options, group_fd);
-          },
-          options.memory_limit_bytes);
-      group.last_progress = Clock::now();
-      running.push_back(std::move(group));
-      ++next;
-    }
+    while (next < groups.size() && static_cast<int>(running.size()) < workers)
+      running.push_back(start_group(jobs, groups[next++], prepare, options));
     std::vector<pollfd> fds;
     bool any_ending = false;
     for (const auto& group : running) {
