@@ -1,5 +1,6 @@
 #include "core/polygon.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace holebench {
@@ -41,6 +42,15 @@ bool inside_projected_polygon(const std::vector<Point>& polygon, const Point& di
       inside = !inside;
   }
   return inside;
+}
+
+double diameter(const std::vector<Point>& points) {
+  double d = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      d = std::max(d, (points[i] - points[j]).norm());
+  }
+  return d;
 }
 
 }  // namespace holebench

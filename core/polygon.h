@@ -1,5 +1,5 @@
-// Closed polygons in 3D given by their points in order: Newell's normal, and which side of
-// a polygon a point lies on once both are projected along a direction.
+// Closed polygons in 3D given by their points in order: Newell's normal, which side of a
+// polygon a point lies on once both are projected along a direction, and a polygon's diameter.
 #pragma once
 
 #include "core/mesh.h"
@@ -16,5 +16,9 @@ Point newell_normal(const std::vector<Point>& polygon);
 /// `direction` (even-odd rule; a point on the boundary may count either way).
 bool inside_projected_polygon(const std::vector<Point>& polygon, const Point& direction,
                               const Point& p);
+
+/// The largest distance between two of the points (0 for fewer than two): a hole's size as
+/// CASES.md defines it for k = 1.
+double diameter(const std::vector<Point>& points);
 
 }  // namespace holebench

@@ -3,6 +3,7 @@
 #include "core/geometry.h"
 #include "core/labels_summary.h"
 #include "core/plane_fit.h"
+#include "core/polygon.h"
 #include "generators/hole_punch.h"
 #include "generators/missing_sharp_edges.h"
 
@@ -283,15 +284,6 @@ std::vector<Point> loop_points_of(const Mesh& mesh, const std::vector<HalfedgeHa
   for (auto h : loop)
     points.push_back(mesh.point(mesh.from_vertex_handle(h)));
   return points;
-}
-
-double diameter(const std::vector<Point>& points) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (std::size_t j = i + 1; j < points.size(); ++j)
-      d = std::max(d, (points[i] - points[j]).norm());
-  }
-  return d;
 }
 
 }  // namespace

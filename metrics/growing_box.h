@@ -1,6 +1,6 @@
 // An axis-aligned box that grows to hold points and balls, starting empty, and the test of
 // whether two boxes meet: the regions around a repair's new faces that the evaluation
-// compares with what it knows of the input (validity.cpp, surface_distance.cpp).
+// compares with what it knows of the input (validity.cpp, mean_search.cpp).
 #pragma once
 
 #include "core/mesh.h"

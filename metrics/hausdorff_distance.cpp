@@ -5,6 +5,7 @@
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
 #include "metrics/triangle_cell.h"
+#include "metrics/triangle_geometry.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -49,20 +50,16 @@ class DirectedSearch {
                         const HausdorffCellBounds* first) {
     // Corner distances of the original triangles are shared through the vertices.
     VertexDistances computed;
-    const VertexDistances* vertices = known.vertices;
-    if (!vertices) {
-      computed = vertex_distances(a, scene_, known.b_face_of_a);
-      vertices = &computed;
-      result_.queries += computed.queries;
-    }
-    for (double d : vertices->distance)
+    const VertexDistances& vertices = vertex_distances(a, scene_, known, computed);
+    result_.queries += computed.queries;
+    for (double d : vertices.distance)
       result_.lower = std::max(result_.lower, d);
     std::vector<TriangleCell> initial;
     initial.reserve(a.n_faces());
     for (auto f : a.faces()) {
       if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
         continue;  // lies on B: distance zero everywhere
-      initial.push_back(face_cell(a, f, *vertices));
+      initial.push_back(face_cell(a, f, vertices));
     }
     // The first cells' queries in parallel, queued in face order (the same queue, and so
     // the same result, whatever the number of threads).
@@ -124,12 +121,9 @@ class DirectedSearch {
   // The largest distance from the cell's corners to triangle `face` of B: an upper bound
   // of d(., B) over the cell, since the distance to one triangle is convex.
   double single_triangle_bound(const std::array<Point, 3>& corners, int face) const {
-    const auto& t = scene_.triangle_of_face(face);
     double bound = 0.0;
-    for (const Point& corner : corners) {
-      const Point q = closest_point_on_triangle(corner, t[0], t[1], t[2]);
-      bound = std::max(bound, (q - corner).norm());
-    }
+    for (double distance : corner_distances_to_triangle(corners, scene_.triangle_of_face(face)))
+      bound = std::max(bound, distance);
     return bound;
   }
 
@@ -258,12 +252,9 @@ class DirectedSearch {
     // The centroid's query, with an upper bound from the corners (1-Lipschitz).
     double centroid_distance() {
       const auto& c = cell.corners;
-      const auto& d = cell.corner_distance;
       const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
-      const double centroid_bound =
-          std::min({d[0] + (centroid - c[0]).norm(), d[1] + (centroid - c[1]).norm(),
-                    d[2] + (centroid - c[2]).norm()});
-      const auto nearest = search.scene_.closest_point(centroid, centroid_bound);
+      const auto nearest =
+          search.scene_.closest_point(centroid, distance_bound_from_corners(cell, centroid));
       nearest_face = nearest.face;
       return nearest.distance;
     }

@@ -144,7 +144,7 @@ class MeanSearchSteps {
   MeanSearchSteps& operator=(const MeanSearchSteps&) = delete;
   std::size_t size() const;  ///< cells and steps held
 
-  struct Table;  ///< surface_distance.cpp
+  struct Table;  ///< mean_search.cpp
   const Table& table() const { return *table_; }
   Table& table() { return *table_; }
 
@@ -174,7 +174,7 @@ class MeanCellBounds {
   MeanCellBounds& operator=(const MeanCellBounds&) = delete;
   std::size_t size() const;  ///< cells held
 
-  struct Table;  ///< surface_distance.cpp
+  struct Table;  ///< mean_search.cpp
   const Table& table() const { return *table_; }
 
  private:

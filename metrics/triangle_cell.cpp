@@ -41,6 +41,12 @@ TriangleCell face_cell(const Mesh& a, FaceHandle f, const VertexDistances& verti
   return cell;
 }
 
+double distance_bound_from_corners(const TriangleCell& cell, const Point& p) {
+  const auto& c = cell.corners;
+  const auto& d = cell.corner_distance;
+  return std::min({d[0] + (p - c[0]).norm(), d[1] + (p - c[1]).norm(), d[2] + (p - c[2]).norm()});
+}
+
 EdgeMidpoints edge_midpoints(const TriangleCell& cell) {
   const auto& c = cell.corners;
   const auto& d = cell.corner_distance;

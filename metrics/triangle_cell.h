@@ -43,6 +43,10 @@ CellKey key_of(const TriangleCell& cell);
 /// and nearest faces from the first pass over A's vertices.
 TriangleCell face_cell(const Mesh& a, FaceHandle f, const VertexDistances& vertices);
 
+/// An upper bound on the distance to B at a point `p` of the cell from its corners' distances
+/// (1-Lipschitz): the least of d(corner, B) + |p - corner|.
+double distance_bound_from_corners(const TriangleCell& cell, const Point& p);
+
 /// The midpoints of a cell's edges c0c1, c1c2, c2c0 and, for each, an upper bound on its
 /// distance to B: the nearer end's distance plus half the edge (1-Lipschitz).
 struct EdgeMidpoints {

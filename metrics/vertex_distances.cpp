@@ -67,6 +67,14 @@ VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_s
   return result;
 }
 
+const VertexDistances& vertex_distances(const Mesh& a, const embree::TriangleScene& b_scene,
+                                        const KnownDistances& known, VertexDistances& computed) {
+  if (known.vertices)
+    return *known.vertices;
+  computed = vertex_distances(a, b_scene, known.b_face_of_a);
+  return computed;
+}
+
 FirstPass first_pass(const Mesh& a, const Mesh& b, const embree::TriangleScene& b_scene) {
   FirstPass pass;
   pass.b_face_of_a = shared_faces(a, b).b_face_of_a;

@@ -45,6 +45,11 @@ struct KnownDistances {
   const std::vector<int>* b_face_of_a = nullptr;  ///< faces of A lying on B: skipped
 };
 
+/// A's vertex distances as a search starts: `known.vertices` where given, else computed now
+/// into `computed` (with the queries they took, which the search counts; none where known).
+const VertexDistances& vertex_distances(const Mesh& a, const embree::TriangleScene& b_scene,
+                                        const KnownDistances& known, VertexDistances& computed);
+
 /// The first pass of A against B, done once for the searches and first-bound tables that
 /// share it (case_evaluation.h): the faces of A lying on B and the distances of A's
 /// vertices.

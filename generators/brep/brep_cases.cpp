@@ -3,6 +3,7 @@
 #include "core/boundary_loops.h"
 #include "core/distances.h"
 #include "core/labels_summary.h"
+#include "core/polygon.h"
 #include "generators/brep/brep_catalogue.h"
 #include "generators/brep/brep_hole_loops.h"
 #include "generators/brep/polyhedron.h"
@@ -71,15 +72,6 @@ int face_containing(const Polyhedron& polyhedron, const Point& p) {
   if (found < 0)
     throw std::logic_error(fmt::format("brep case: no face at ({}, {}, {})", p[0], p[1], p[2]));
   return found;
-}
-
-double diameter(const std::vector<Point>& points) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (std::size_t j = i + 1; j < points.size(); ++j)
-      d = std::max(d, (points[i] - points[j]).norm());
-  }
-  return d;
 }
 
 // Index of the loop (among `loops`) with a vertex nearest to p.

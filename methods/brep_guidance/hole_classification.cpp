@@ -1,5 +1,7 @@
 #include "methods/brep_guidance/hole_classification.h"
 
+#include "core/polygon.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -58,15 +60,6 @@ std::pair<Convexity, bool> convexity_by_nearest_hole_vertices(const Mesh& mesh,
     return {Convexity::Reflex, false};
   const double decisive = std::abs(side_i) >= std::abs(side_l) ? side_i : side_l;
   return {decisive < 0.0 ? Convexity::Convex : Convexity::Reflex, true};
-}
-
-double largest_diameter(const std::vector<Point>& points) {
-  double d = 0.0;
-  for (const Point& p : points) {
-    for (const Point& q : points)
-      d = std::max(d, (p - q).norm());
-  }
-  return d;
 }
 
 }  // namespace
@@ -271,7 +264,7 @@ Classification classify_hole(const Mesh& mesh, const BrepFaces& faces, const Hol
     for (const Point& p : loop)
       c.size = std::max(c.size, (p - *hole.S).norm());
   } else {
-    c.size = largest_diameter(loop);
+    c.size = diameter(loop);
   }
 
   c.decision = c.orientation == Orientation::Inner && c.orientation_known && k <= 3 &&

@@ -132,29 +132,25 @@ Mesh band_mesh(const Mesh& mesh, const std::vector<char>& in_band,
   return band;
 }
 
-}  // namespace
-
-CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options) {
-  CrestLines result;
-  double total = 0.0;
-  for (auto e : mesh.edges())
-    total += mesh.calc_edge_length(e);
-  result.mean_edge_length = mesh.n_edges() > 0 ? total / static_cast<double>(mesh.n_edges()) : 0;
-  if (mesh.n_faces() == 0)
-    return result;
-
+// The fields CGAL's ridge approximation reads, per vertex: the principal curvatures k1, k2
+// and directions d1, d2, the extremality coefficients b0, b3 and p1, p2 of the jet fit.
+struct JetFields {
   ScalarMap k1, k2, b0, b3, p1, p2;
   VectorMap d1, d2;
+};
+
+// The jets fitted at the vertices of the band (in_band); elsewhere, and where the fit fails,
+// no curvature, so no ridge crosses an edge at an unfitted vertex.
+JetFields fit_jets(const Mesh& mesh, const std::vector<char>& in_band,
+                   const CrestLineOptions& options) {
+  JetFields f;
   const int degree = std::max(3, options.jet_degree);
   const std::size_t needed = static_cast<std::size_t>((degree + 1) * (degree + 2) / 2);
-  // Only a band of rings around the holes is fitted and traced: the crest lines the method
-  // uses are those that reach a hole's boundary.
-  const std::vector<char> in_band = band_around_boundaries(mesh, options.band_rings);
   for (auto v : mesh.vertices()) {
     // Defaults: no curvature, so no ridge crosses an edge at an unfitted vertex.
-    k1[v] = k2[v] = b0[v] = b3[v] = p1[v] = p2[v] = 0.0;
-    d1[v] = Vector3(1, 0, 0);
-    d2[v] = Vector3(0, 1, 0);
+    f.k1[v] = f.k2[v] = f.b0[v] = f.b3[v] = f.p1[v] = f.p2[v] = 0.0;
+    f.d1[v] = Vector3(1, 0, 0);
+    f.d2[v] = Vector3(0, 1, 0);
     if (mesh.is_isolated(v) || !in_band[v.idx()])
       continue;
     std::vector<Point3> points;
@@ -178,85 +174,84 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
     const auto& c = form.coefficients();
     if (c.size() < 6)
       continue;
-    d1[v] = form.maximal_principal_direction();
-    d2[v] = form.minimal_principal_direction();
-    k1[v] = c[0];
-    k2[v] = c[1];
-    b0[v] = c[2];
-    b3[v] = c[5];
+    f.d1[v] = form.maximal_principal_direction();
+    f.d2[v] = form.minimal_principal_direction();
+    f.k1[v] = c[0];
+    f.k2[v] = c[1];
+    f.b0[v] = c[2];
+    f.b3[v] = c[5];
     if (c.size() >= 11) {
-      p1[v] = 3 * c[3] * c[3] + (c[0] - c[1]) * (c[6] - 3 * c[0] * c[0] * c[0]);
-      p2[v] = 3 * c[4] * c[4] + (c[1] - c[0]) * (c[10] - 3 * c[1] * c[1] * c[1]);
+      f.p1[v] = 3 * c[3] * c[3] + (c[0] - c[1]) * (c[6] - 3 * c[0] * c[0] * c[0]);
+      f.p2[v] = 3 * c[4] * c[4] + (c[1] - c[0]) * (c[10] - 3 * c[1] * c[1] * c[1]);
     }
   }
+  return f;
+}
 
-  std::vector<VertexHandle> origin;
-  const bool whole = options.band_rings <= 0;
-  const Mesh band = whole ? Mesh() : band_mesh(mesh, in_band, origin);
-  const Mesh& traced = whole ? mesh : band;
-  if (!whole) {
-    ScalarMap bk1, bk2, bb0, bb3, bp1, bp2;
-    VectorMap bd1, bd2;
-    for (auto v : band.vertices()) {
-      const VertexHandle o = origin[v.idx()];
-      bk1[v] = k1[o];
-      bk2[v] = k2[o];
-      bb0[v] = b0[o];
-      bb3[v] = b3[o];
-      bp1[v] = p1[o];
-      bp2[v] = p2[o];
-      bd1[v] = d1[o];
-      bd2[v] = d2[o];
-    }
-    k1.swap(bk1);
-    k2.swap(bk2);
-    b0.swap(bb0);
-    b3.swap(bb3);
-    p1.swap(bp1);
-    p2.swap(bp2);
-    d1.swap(bd1);
-    d2.swap(bd2);
+// The fields of the mesh's vertices read at the band's (`origin`: each band vertex's vertex
+// of the mesh).
+JetFields on_band(JetFields& f, const Mesh& band, const std::vector<VertexHandle>& origin) {
+  JetFields b;
+  for (auto v : band.vertices()) {
+    const VertexHandle o = origin[v.idx()];
+    b.k1[v] = f.k1[o];
+    b.k2[v] = f.k2[o];
+    b.b0[v] = f.b0[o];
+    b.b3[v] = f.b3[o];
+    b.p1[v] = f.p1[o];
+    b.p2[v] = f.p2[o];
+    b.d1[v] = f.d1[o];
+    b.d2[v] = f.d2[o];
   }
+  return b;
+}
 
-  // CGAL's ridge tracing assumes that every regular triangle is crossed on 0 or 2 edges; a
-  // crossing is a sign change of (d_p . d_q) b_p b_q, so that holds where no b and no dot
-  // product of principal directions is exactly 0. Planar parts (exact zeros, axis-aligned
-  // directions) break it: keep every b away from 0 and tilt every direction by a tiny
-  // generic amount, then check every triangle and give up (no crest lines) rather than let
-  // CGAL read an unset crossing.
+// CGAL's ridge tracing assumes that every regular triangle is crossed on 0 or 2 edges; a
+// crossing is a sign change of (d_p . d_q) b_p b_q, so that holds where no b and no dot
+// product of principal directions is exactly 0. Planar parts (exact zeros, axis-aligned
+// directions) break it: keep every b away from 0 and tilt every direction by a tiny generic
+// amount, then check every triangle and give up (false: no crest lines) rather than let CGAL
+// read an unset crossing.
+bool make_generic_for_tracing(const Mesh& traced, JetFields& f) {
   const Vector3 tilt(0.3141592653589793e-7, 0.2718281828459045e-7, 0.1414213562373095e-7);
   for (auto v : traced.vertices()) {
-    for (double* b : {&b0[v], &b3[v]}) {
+    for (double* b : {&f.b0[v], &f.b3[v]}) {
       if (std::abs(*b) < 1e-100)
         *b = 1e-100;
     }
-    d1[v] = d1[v] + tilt;
-    d2[v] = d2[v] - tilt;
+    f.d1[v] = f.d1[v] + tilt;
+    f.d2[v] = f.d2[v] - tilt;
   }
-  for (auto f : traced.faces()) {
+  auto& d1 = f.d1;
+  for (auto face : traced.faces()) {
     std::array<VertexDescriptor, 3> v;
     int i = 0;
-    for (auto u : traced.fv_range(f))
+    for (auto u : traced.fv_range(face))
       v[i++ % 3] = u;
     const double regular = (d1[v[0]] * d1[v[1]]) * (d1[v[0]] * d1[v[2]]) * (d1[v[1]] * d1[v[2]]);
     if (regular < 0)
       continue;  // CGAL skips it
-    for (const ScalarMap* b : {&b0, &b3}) {
+    for (const ScalarMap* b : {&f.b0, &f.b3}) {
       int crossed = 0;
       for (int k = 0; k < 3; ++k) {
         const auto p = v[k], q = v[(k + 1) % 3];
         crossed += (d1[p] * d1[q]) * b->at(p) * b->at(q) < 0 ? 1 : 0;
       }
-      if (regular == 0.0 || crossed % 2 == 1) {
-        result.skipped = true;
-        return result;
-      }
+      if (regular == 0.0 || crossed % 2 == 1)
+        return false;
     }
   }
+  return true;
+}
 
+// The crest ridges CGAL traces on `traced`, each kept (in `result.lines`) where its sign and
+// strength say it is a crest line, counted as weak where only its strength fails.
+void keep_crest_ridges(const Mesh& traced, JetFields& f, const CrestLineOptions& options,
+                       CrestLines& result) {
   using Ridges = CGAL::Ridge_approximation<Mesh, ScalarPmap, VectorPmap>;
-  ScalarPmap k1m(k1), k2m(k2), b0m(b0), b3m(b3), p1m(p1), p2m(p2);
-  VectorPmap d1m(d1), d2m(d2);
+  ScalarMap &k1 = f.k1, &k2 = f.k2;
+  ScalarPmap k1m(f.k1), k2m(f.k2), b0m(f.b0), b3m(f.b3), p1m(f.p1), p2m(f.p2);
+  VectorPmap d1m(f.d1), d2m(f.d2);
   Ridges ridges(traced, k1m, k2m, b0m, b3m, d1m, d2m, p1m, p2m);
   std::vector<Ridges::Ridge_line*> found;
   ridges.compute_crest_ridges(std::back_inserter(found), CGAL::Ridge_order_3);
@@ -296,6 +291,34 @@ CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options)
     }
     delete line;
   }
+}
+
+}  // namespace
+
+CrestLines detect_crest_lines(const Mesh& mesh, const CrestLineOptions& options) {
+  CrestLines result;
+  double total = 0.0;
+  for (auto e : mesh.edges())
+    total += mesh.calc_edge_length(e);
+  result.mean_edge_length = mesh.n_edges() > 0 ? total / static_cast<double>(mesh.n_edges()) : 0;
+  if (mesh.n_faces() == 0)
+    return result;
+
+  // Only a band of rings around the holes is fitted and traced: the crest lines the method
+  // uses are those that reach a hole's boundary.
+  const std::vector<char> in_band = band_around_boundaries(mesh, options.band_rings);
+  JetFields fields = fit_jets(mesh, in_band, options);
+  std::vector<VertexHandle> origin;
+  const bool whole = options.band_rings <= 0;
+  const Mesh band = whole ? Mesh() : band_mesh(mesh, in_band, origin);
+  const Mesh& traced = whole ? mesh : band;
+  if (!whole)
+    fields = on_band(fields, band, origin);
+  if (!make_generic_for_tracing(traced, fields)) {
+    result.skipped = true;
+    return result;
+  }
+  keep_crest_ridges(traced, fields, options, result);
   // Sharp creases (sharp_creases.h): the crease itself is the crest line, and the fitted
   // ridges beside it are dropped.
   std::vector<CrestLine> creases =

@@ -129,162 +129,156 @@ std::size_t split_chords_the_mesh_has(const Mesh& mesh, std::vector<std::array<N
   return splits;
 }
 
-HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
-                            const HoleFillingOptions& options) {
-  HoleFillingResult result;
-  const std::vector<int> placed = place_islands(mesh, partition);
-  if (std::find(placed.begin(), placed.end(), -1) != placed.end()) {
-    result.error = "an island lies inside no sub-hole";
-    return result;
+namespace {
+
+// The CDT of a loop (and inner loops) projected on the plane with `normal` through the loop's
+// centroid; indices count the loop's nodes, then the inner loops'.
+PolygonTriangulation projected_triangulation(const Mesh& mesh, const std::vector<Point>& new_points,
+                                             const std::vector<Node>& loop,
+                                             const std::vector<std::vector<Node>>& inner,
+                                             const Point& normal) {
+  PolygonTriangulation triangulation;
+  if (normal.norm() < 1e-12) {
+    triangulation.error = "no projection direction";
+    return triangulation;
   }
-  std::vector<Point> new_points = partition.new_points;  // grows by the chords' points
-  auto point = [&](Node node) { return node_point(mesh, new_points, node); };
-  auto points_of = [&](const std::vector<Node>& nodes) {
-    return node_points(mesh, new_points, nodes);
-  };
-  // The CDT of a loop (and inner loops) projected on the plane with `normal` through the
-  // loop's centroid; indices count the loop's nodes, then the inner loops'.
-  auto project = [&](const std::vector<Node>& loop, const std::vector<std::vector<Node>>& inner,
-                     const Point& normal) {
-    PolygonTriangulation triangulation;
-    if (normal.norm() < 1e-12) {
-      triangulation.error = "no projection direction";
-      return triangulation;
-    }
-    const std::vector<Point> points = points_of(loop);
-    std::vector<std::vector<Point>> inner_points;
-    for (const auto& island : inner)
-      inner_points.push_back(points_of(island));
-    Plane plane;
-    for (const Point& p : points)
-      plane.point += p;
-    plane.point /= static_cast<double>(points.size());
-    plane.normal = normal / normal.norm();
-    return triangulate_planar_polygon(points, plane, inner_points);
-  };
-  // Equation 6: the normals of the triangles along the loop and along the inner loops.
-  auto equation_6 = [&](const std::vector<Node>& loop,
-                        const std::vector<std::vector<Node>>& inner) {
-    Point normal = projection_normal(mesh, loop);
-    for (const auto& island : inner)
-      normal += projection_normal(mesh, island);
-    return project(loop, inner, normal);
-  };
-  std::vector<std::array<Node, 3>> triangles;
-  // Orient a triangulation like the mesh (the triangle on the loop's first edge (0, 1) must
-  // run 0 -> 1) and keep its triangles as nodes.
-  auto keep = [&](const std::vector<Node>& nodes, const PolygonTriangulation& triangulation) {
-    bool flip = false;
-    for (const auto& t : triangulation.triangles) {
-      for (int k = 0; k < 3; ++k) {
-        if (t[k] == 0 && t[(k + 1) % 3] == 1)
-          flip = false;
-        if (t[k] == 1 && t[(k + 1) % 3] == 0)
-          flip = true;
-      }
-    }
-    for (const auto& t : triangulation.triangles) {
-      std::array<Node, 3> tri{nodes[t[0]], nodes[t[1]], nodes[t[2]]};
-      if (flip)
-        std::swap(tri[1], tri[2]);
-      triangles.push_back(tri);
-    }
-  };
+  const std::vector<Point> points = node_points(mesh, new_points, loop);
+  std::vector<std::vector<Point>> inner_points;
+  for (const auto& island : inner)
+    inner_points.push_back(node_points(mesh, new_points, island));
+  Plane plane;
+  for (const Point& p : points)
+    plane.point += p;
+  plane.point /= static_cast<double>(points.size());
+  plane.normal = normal / normal.norm();
+  return triangulate_planar_polygon(points, plane, inner_points);
+}
 
-  for (std::size_t i = 0; i < partition.sub_holes.size(); ++i) {
-    SubHoleFilling filling;
-    const std::vector<Node>& loop = partition.sub_holes[i];
-    std::vector<std::vector<Node>> islands;
-    for (std::size_t k = 0; k < placed.size(); ++k) {
-      if (placed[k] == static_cast<int>(i))
-        islands.push_back(partition.islands[k]);
-    }
-    // The triangulation's indices count the loop's nodes, then the islands'.
-    std::vector<Node> nodes = loop;
-    for (const auto& island : islands)
-      nodes.insert(nodes.end(), island.begin(), island.end());
+// Equation 6: the normals of the triangles along the loop and along the inner loops.
+PolygonTriangulation equation_6(const Mesh& mesh, const std::vector<Point>& new_points,
+                                const std::vector<Node>& loop,
+                                const std::vector<std::vector<Node>>& inner) {
+  Point normal = projection_normal(mesh, loop);
+  for (const auto& island : inner)
+    normal += projection_normal(mesh, island);
+  return projected_triangulation(mesh, new_points, loop, inner, normal);
+}
 
-    // Equation 6 (the paper's step).
-    PolygonTriangulation triangulation = equation_6(loop, islands);
-    if (triangulation.ok) {
+// Orient a triangulation like the mesh (the triangle on the loop's first edge (0, 1) must run
+// 0 -> 1) and keep its triangles as nodes.
+void keep_oriented(const std::vector<Node>& nodes, const PolygonTriangulation& triangulation,
+                   std::vector<std::array<Node, 3>>& triangles) {
+  bool flip = false;
+  for (const auto& t : triangulation.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] == 0 && t[(k + 1) % 3] == 1)
+        flip = false;
+      if (t[k] == 1 && t[(k + 1) % 3] == 0)
+        flip = true;
+    }
+  }
+  for (const auto& t : triangulation.triangles) {
+    std::array<Node, 3> tri{nodes[t[0]], nodes[t[1]], nodes[t[2]]};
+    if (flip)
+      std::swap(tri[1], tri[2]);
+    triangles.push_back(tri);
+  }
+}
+
+// Every projection intersects itself: a minimum-weight triangulation of the 3D boundary
+// polygon (Barequet-Sharir / Liepa, CGAL), recorded as a departure. False where CGAL finds
+// none.
+bool triangulate_3d_polygon(const std::vector<Point>& points, PolygonTriangulation& triangulation) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<Kernel::Point_3> polyline;
+  for (const Point& p : points)
+    polyline.emplace_back(p[0], p[1], p[2]);
+  std::vector<CGAL::Triple<int, int, int>> patch;
+  // Without CGAL's 3D Delaunay restriction: on regular boundaries it depends on memory
+  // addresses, and the same job would give different patches (docs/methods.md).
+  PMP::triangulate_hole_polyline(polyline, std::back_inserter(patch),
+                                 CGAL::parameters::use_delaunay_triangulation(false));
+  if (patch.empty())
+    return false;
+  triangulation.triangles.clear();
+  for (const auto& t : patch)
+    triangulation.triangles.push_back({t.first, t.second, t.third});
+  triangulation.ok = true;
+  return true;
+}
+
+// One sub-hole (`loop` with the islands placed in it) triangulated, its triangles added to
+// `triangles`: by equation 6 (the paper's step), else equation 6 on planar pieces, else the
+// fallbacks, each named. `new_points` grows by the chords' points.
+SubHoleFilling fill_sub_hole(const Mesh& mesh, std::vector<Point>& new_points,
+                             const std::vector<Node>& loop,
+                             const std::vector<std::vector<Node>>& islands,
+                             const HoleFillingOptions& options,
+                             std::vector<std::array<Node, 3>>& triangles) {
+  SubHoleFilling filling;
+  // The triangulation's indices count the loop's nodes, then the islands'.
+  std::vector<Node> nodes = loop;
+  for (const auto& island : islands)
+    nodes.insert(nodes.end(), island.begin(), island.end());
+
+  // Equation 6 (the paper's step).
+  PolygonTriangulation triangulation = equation_6(mesh, new_points, loop, islands);
+  if (triangulation.ok) {
+    filling.ok = true;
+    filling.plane = "equation 6";
+    keep_oriented(nodes, triangulation, triangles);
+    return filling;
+  }
+  filling.error = "equation 6: " + triangulation.error;
+
+  // Where its projection intersects itself: the sub-hole cut into more planar pieces, each
+  // projected by equation 6 (planarity_split.h).
+  if (islands.empty()) {
+    const PlanaritySplit split = split_for_equation_6(
+        loop, new_points, [&](Node node) { return node_point(mesh, new_points, node); },
+        [&](const std::vector<Node>& piece) { return equation_6(mesh, new_points, piece, {}); },
+        options.planarity_split);
+    if (split.ok) {
       filling.ok = true;
       filling.plane = "equation 6";
-      keep(nodes, triangulation);
-      result.sub_holes.push_back(filling);
-      continue;
+      filling.chords = split.chords;
+      for (const auto& piece : split.pieces)
+        keep_oriented(piece.nodes, piece.triangulation, triangles);
+      return filling;
     }
-    filling.error = "equation 6: " + triangulation.error;
-
-    // Where its projection intersects itself: the sub-hole cut into more planar pieces, each
-    // projected by equation 6 (planarity_split.h).
-    if (islands.empty()) {
-      const PlanaritySplit split = split_for_equation_6(
-          loop, new_points, point,
-          [&](const std::vector<Node>& piece) { return equation_6(piece, {}); },
-          options.planarity_split);
-      if (split.ok) {
-        filling.ok = true;
-        filling.plane = "equation 6";
-        filling.chords = split.chords;
-        for (const auto& piece : split.pieces)
-          keep(piece.nodes, piece.triangulation);
-        result.sub_holes.push_back(filling);
-        continue;
-      }
-    }
-
-    // Not in the paper: Newell's normal (the maximum area vector of the polygon itself), then
-    // the least-squares plane, then a 3D triangulation; each named as the fallback.
-    const std::vector<Point> points = points_of(loop);
-    std::vector<std::pair<std::string, Point>> normals{{"newell", newell_normal(points)}};
-    const PlaneFit fit = fit_plane(points);
-    if (fit.valid)
-      normals.push_back({"least squares", fit.plane.normal});
-    for (const auto& [name, normal] : normals) {
-      triangulation = project(loop, islands, normal);
-      if (triangulation.ok) {
-        filling.plane = name;
-        filling.fallback = name == "newell" ? kNewellProjection : kLeastSquaresProjection;
-        break;
-      }
-    }
-    if (!triangulation.ok && options.polyline_fallback && islands.empty()) {
-      // Every projection intersects itself: a minimum-weight triangulation of the 3D
-      // boundary polygon (Barequet-Sharir / Liepa, CGAL), recorded as a departure.
-      using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-      std::vector<Kernel::Point_3> polyline;
-      for (const Point& p : points)
-        polyline.emplace_back(p[0], p[1], p[2]);
-      std::vector<CGAL::Triple<int, int, int>> patch;
-      // Without CGAL's 3D Delaunay restriction: on regular boundaries it depends on memory
-      // addresses, and the same job would give different patches (docs/methods.md).
-      PMP::triangulate_hole_polyline(polyline, std::back_inserter(patch),
-                                     CGAL::parameters::use_delaunay_triangulation(false));
-      if (!patch.empty()) {
-        triangulation.triangles.clear();
-        for (const auto& t : patch)
-          triangulation.triangles.push_back({t.first, t.second, t.third});
-        triangulation.ok = true;
-        filling.plane = "none (3D minimum-weight triangulation)";
-        filling.fallback = kPolylineTriangulation;
-      }
-    }
-    filling.ok = triangulation.ok;
-    if (triangulation.ok)
-      keep(nodes, triangulation);
-    result.sub_holes.push_back(filling);
-  }
-  const bool all = std::all_of(result.sub_holes.begin(), result.sub_holes.end(),
-                               [](const SubHoleFilling& s) { return s.ok; });
-  if (!all) {
-    result.error = "a sub-hole could not be triangulated";
-    return result;
   }
 
-  if (options.split_taken_chords)
-    result.split_chords = split_chords_the_mesh_has(mesh, triangles, new_points);
+  // Not in the paper: Newell's normal (the maximum area vector of the polygon itself), then
+  // the least-squares plane, then a 3D triangulation; each named as the fallback.
+  const std::vector<Point> points = node_points(mesh, new_points, loop);
+  std::vector<std::pair<std::string, Point>> normals{{"newell", newell_normal(points)}};
+  const PlaneFit fit = fit_plane(points);
+  if (fit.valid)
+    normals.push_back({"least squares", fit.plane.normal});
+  for (const auto& [name, normal] : normals) {
+    triangulation = projected_triangulation(mesh, new_points, loop, islands, normal);
+    if (triangulation.ok) {
+      filling.plane = name;
+      filling.fallback = name == "newell" ? kNewellProjection : kLeastSquaresProjection;
+      break;
+    }
+  }
+  if (!triangulation.ok && options.polyline_fallback && islands.empty() &&
+      triangulate_3d_polygon(points, triangulation)) {
+    filling.plane = "none (3D minimum-weight triangulation)";
+    filling.fallback = kPolylineTriangulation;
+  }
+  filling.ok = triangulation.ok;
+  if (triangulation.ok)
+    keep_oriented(nodes, triangulation, triangles);
+  return filling;
+}
 
-  // Stitch: new vertices for the new points the sub-holes use, then the faces.
+// Stitch: new vertices for the new points the sub-holes use, then the faces; refined and
+// faired where the options ask. The mesh is changed only where every triangle was stitched.
+void stitch(Mesh& mesh, const std::vector<std::array<Node, 3>>& triangles,
+            const std::vector<Point>& new_points, const HoleFillingOptions& options,
+            HoleFillingResult& result) {
   Mesh patched = mesh;
   std::map<Node, VertexHandle> handles;
   auto handle = [&](Node node) {
@@ -303,7 +297,7 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
     if (!f.is_valid()) {
       result.error = "a patch triangle could not be stitched (non-manifold)";
       result.new_vertices = 0;
-      return result;
+      return;
     }
     new_faces.push_back(f);
   }
@@ -320,6 +314,38 @@ HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
   result.new_faces = count_new_faces(patched) - count_new_faces(mesh);
   result.closed = true;
   mesh = std::move(patched);
+}
+
+}  // namespace
+
+HoleFillingResult fill_hole(Mesh& mesh, const HolePartition& partition,
+                            const HoleFillingOptions& options) {
+  HoleFillingResult result;
+  const std::vector<int> placed = place_islands(mesh, partition);
+  if (std::find(placed.begin(), placed.end(), -1) != placed.end()) {
+    result.error = "an island lies inside no sub-hole";
+    return result;
+  }
+  std::vector<Point> new_points = partition.new_points;  // grows by the chords' points
+  std::vector<std::array<Node, 3>> triangles;
+  for (std::size_t i = 0; i < partition.sub_holes.size(); ++i) {
+    std::vector<std::vector<Node>> islands;
+    for (std::size_t k = 0; k < placed.size(); ++k) {
+      if (placed[k] == static_cast<int>(i))
+        islands.push_back(partition.islands[k]);
+    }
+    result.sub_holes.push_back(
+        fill_sub_hole(mesh, new_points, partition.sub_holes[i], islands, options, triangles));
+  }
+  const bool all = std::all_of(result.sub_holes.begin(), result.sub_holes.end(),
+                               [](const SubHoleFilling& s) { return s.ok; });
+  if (!all) {
+    result.error = "a sub-hole could not be triangulated";
+    return result;
+  }
+  if (options.split_taken_chords)
+    result.split_chords = split_chords_the_mesh_has(mesh, triangles, new_points);
+  stitch(mesh, triangles, new_points, options, result);
   return result;
 }
 

@@ -164,99 +164,139 @@ TrimmingPolygon polygon_on_disc(const Portion& portion, const LoftedPatch& patch
   return polygon;
 }
 
-PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const Portion& portion,
-                                const LoftedPatch& patch, double edge_length,
-                                const TessellationOptions& options) {
-  PatchTessellation result;
+// The portion's loops in a trimming domain (section 4.5: trimming in the parameter domain).
+struct DomainPolygon {
+  TrimmingDomain domain;
+  TrimmingPolygon polygon;
+  double spacing_scale = 1.0;                      // the disc's scale of the spacing
+  std::vector<std::array<double, 2>> disc_points;  // developed disc only: loops[0]
+};
+
+DomainPolygon domain_polygon(TrimmingDomain domain, const Portion& portion,
+                             const LoftedPatch& patch) {
+  DomainPolygon result;
   result.domain = domain;
-  if (options.direct && domain == TrimmingDomain::DevelopedDisc) {
-    result.failure = TriangulationFailure::SelfIntersection;
-    result.error = "the section points cannot be placed on the developed disc";
-    return result;
-  }
-  // The loops in the chosen domain (section 4.5: trimming in the parameter domain), and the
-  // surface point of a point of the domain.
-  double spacing_scale = 1.0;
-  const TrimmingPolygon polygon = domain == TrimmingDomain::DevelopedDisc
-                                      ? polygon_on_disc(portion, patch, spacing_scale)
-                                      : polygon_by_parameters(domain, portion, patch);
-  const auto& loops = polygon.loops;
-  std::vector<std::array<double, 2>> disc_points;
+  result.polygon = domain == TrimmingDomain::DevelopedDisc
+                       ? polygon_on_disc(portion, patch, result.spacing_scale)
+                       : polygon_by_parameters(domain, portion, patch);
   if (domain == TrimmingDomain::DevelopedDisc) {
-    for (const Vec2& p : loops[0])
-      disc_points.push_back({p.x, p.y});
+    for (const Vec2& p : result.polygon.loops[0])
+      result.disc_points.push_back({p.x, p.y});
   }
-  auto surface_point = [&](Vec2 q) {
-    if (domain == TrimmingDomain::PortionPlane)
-      return patch.point_over_plane(q.x, q.y);
-    if (domain == TrimmingDomain::Surface)
-      return patch.evaluate(q.x, q.y);
-    // The disc: the boundary's surface parameters interpolated by mean value coordinates.
-    const std::vector<double> weights = mean_value_coordinates(disc_points, {q.x, q.y});
-    double u = 0.0, s = 0.0;
-    for (std::size_t i = 0; i < weights.size(); ++i) {
-      u += weights[i] * polygon.surface_parameters[i].x;
-      s += weights[i] * polygon.surface_parameters[i].y;
-    }
-    return patch.evaluate(u, s);
-  };
-  const double spacing = options.spacing_edges * edge_length * spacing_scale;
-  const double clearance = options.clearance * spacing;
-  auto admissible = [&](Vec2 p) {
-    if (!inside_polygon_2d(loops[0], p))
+  return result;
+}
+
+// The surface point of a point q of the domain.
+Point surface_point(const DomainPolygon& domain, const LoftedPatch& patch, Vec2 q) {
+  if (domain.domain == TrimmingDomain::PortionPlane)
+    return patch.point_over_plane(q.x, q.y);
+  if (domain.domain == TrimmingDomain::Surface)
+    return patch.evaluate(q.x, q.y);
+  // The disc: the boundary's surface parameters interpolated by mean value coordinates.
+  const std::vector<double> weights = mean_value_coordinates(domain.disc_points, {q.x, q.y});
+  double u = 0.0, s = 0.0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    u += weights[i] * domain.polygon.surface_parameters[i].x;
+    s += weights[i] * domain.polygon.surface_parameters[i].y;
+  }
+  return patch.evaluate(u, s);
+}
+
+// Whether p lies inside the hole's boundary (loops[0]), outside the islands' and at least
+// `clearance` from every loop.
+bool admissible(const std::vector<std::vector<Vec2>>& loops, Vec2 p, double clearance) {
+  if (!inside_polygon_2d(loops[0], p))
+    return false;
+  for (std::size_t k = 1; k < loops.size(); ++k) {
+    if (inside_polygon_2d(loops[k], p))
       return false;
-    for (std::size_t k = 1; k < loops.size(); ++k) {
-      if (inside_polygon_2d(loops[k], p))
-        return false;
-    }
-    for (const auto& loop : loops) {
-      if (distance_to_polygon_2d(loop, p) < clearance)
-        return false;
-    }
-    return true;
-  };
+  }
+  for (const auto& loop : loops) {
+    if (distance_to_polygon_2d(loop, p) < clearance)
+      return false;
+  }
+  return true;
+}
 
-  // Trimming: the candidate points inside the hole's and outside the islands' boundaries.
+// The candidate points of the project's `direct` option: the sections' traced points that
+// are admissible, none within half a spacing of one taken before. Their domain points are
+// returned, their surface points appended to `interior`.
+std::vector<Vec2> section_points_inside(const DomainPolygon& domain, const LoftedPatch& patch,
+                                        double spacing, double clearance,
+                                        std::vector<Point>& interior) {
   std::vector<Vec2> interior_2d;
-  if (options.direct) {
-    for (const auto& section : patch.sections) {
-      for (const Point& p : section.traced) {
-        const auto [u, s] = domain == TrimmingDomain::PortionPlane
-                                ? std::array<double, 2>{patch.u_of(p), patch.w_of(p)}
-                                : patch.parameters(p);
-        const Vec2 q{u, s};
-        if (!admissible(q))
-          continue;
-        bool crowded = false;
-        for (const Vec2& r : interior_2d)
-          crowded = crowded || std::hypot(q.x - r.x, q.y - r.y) < 0.5 * spacing;
-        if (crowded)
-          continue;
-        interior_2d.push_back(q);
-        result.interior.push_back(p);
-      }
-    }
-  } else {
-    double u0 = 1e300, u1 = -1e300, w0 = 1e300, w1 = -1e300;
-    for (const Vec2& p : loops[0]) {
-      u0 = std::min(u0, p.x);
-      u1 = std::max(u1, p.x);
-      w0 = std::min(w0, p.y);
-      w1 = std::max(w1, p.y);
-    }
-    const double row = spacing * std::sqrt(3.0) / 2.0;
-    int r = 0;
-    for (double w = w0 + 0.5 * row; w < w1; w += row, ++r) {
-      for (double u = u0 + (r % 2 ? 0.5 : 0.25) * spacing; u < u1; u += spacing) {
-        if (!admissible({u, w}))
-          continue;
-        interior_2d.push_back({u, w});
-        result.interior.push_back(surface_point({u, w}));
-      }
+  for (const auto& section : patch.sections) {
+    for (const Point& p : section.traced) {
+      const auto [u, s] = domain.domain == TrimmingDomain::PortionPlane
+                              ? std::array<double, 2>{patch.u_of(p), patch.w_of(p)}
+                              : patch.parameters(p);
+      const Vec2 q{u, s};
+      if (!admissible(domain.polygon.loops, q, clearance))
+        continue;
+      bool crowded = false;
+      for (const Vec2& r : interior_2d)
+        crowded = crowded || std::hypot(q.x - r.x, q.y - r.y) < 0.5 * spacing;
+      if (crowded)
+        continue;
+      interior_2d.push_back(q);
+      interior.push_back(p);
     }
   }
+  return interior_2d;
+}
 
-  // Faceting: constrained Delaunay triangulation with the boundary edges as constraints.
+// The candidate points on a triangular grid of `spacing` over the hole's box in the domain,
+// the admissible ones kept. Their domain points are returned, their surface points appended
+// to `interior`.
+std::vector<Vec2> grid_points_inside(const DomainPolygon& domain, const LoftedPatch& patch,
+                                     double spacing, double clearance,
+                                     std::vector<Point>& interior) {
+  const auto& loops = domain.polygon.loops;
+  std::vector<Vec2> interior_2d;
+  double u0 = 1e300, u1 = -1e300, w0 = 1e300, w1 = -1e300;
+  for (const Vec2& p : loops[0]) {
+    u0 = std::min(u0, p.x);
+    u1 = std::max(u1, p.x);
+    w0 = std::min(w0, p.y);
+    w1 = std::max(w1, p.y);
+  }
+  const double row = spacing * std::sqrt(3.0) / 2.0;
+  int r = 0;
+  for (double w = w0 + 0.5 * row; w < w1; w += row, ++r) {
+    for (double u = u0 + (r % 2 ? 0.5 : 0.25) * spacing; u < u1; u += spacing) {
+      if (!admissible(loops, {u, w}, clearance))
+        continue;
+      interior_2d.push_back({u, w});
+      interior.push_back(surface_point(domain, patch, {u, w}));
+    }
+  }
+  return interior_2d;
+}
+
+// The point pairs of the loops' own edges, as the triangulation numbers the points.
+std::set<std::array<int, 2>> loop_edges_of(const std::vector<std::vector<Vec2>>& loops) {
+  std::set<std::array<int, 2>> loop_edges;
+  for (std::size_t l = 0, first = 0; l < loops.size(); first += loops[l].size(), ++l) {
+    const int size = static_cast<int>(loops[l].size());
+    for (int i = 0; i < size; ++i) {
+      const int a = static_cast<int>(first) + i, b = static_cast<int>(first) + (i + 1) % size;
+      loop_edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  }
+  return loop_edges;
+}
+
+// Faceting: constrained Delaunay triangulation with the boundary edges as constraints. Chords
+// the mesh already has get a point at their middle (a Steiner point on the surface), and the
+// patch is triangulated again, at most max_chord_splits times. The chords' points are
+// appended to `result.interior`, and counted.
+PolygonTriangulation2d facets_with_chords_split(const Mesh& mesh, const DomainPolygon& domain,
+                                                const LoftedPatch& patch,
+                                                const std::vector<const BoundaryNode*>& numbered,
+                                                const std::vector<Vec2>& interior_2d,
+                                                const TessellationOptions& options,
+                                                PatchTessellation& result) {
+  const auto& loops = domain.polygon.loops;
   std::vector<std::vector<std::array<double, 2>>> loops_2d;
   std::vector<std::array<double, 2>> all_points;
   for (const auto& loop : loops) {
@@ -270,20 +310,10 @@ PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const P
   for (const Vec2& p : interior_2d)
     interior_points.push_back({p.x, p.y});
   PolygonTriangulation2d facets = triangulate_polygon_2d(loops_2d, interior_points);
-  // Chords the mesh already has get a point at their middle (a Steiner point on the
-  // surface), and the patch is triangulated again.
-  const std::vector<const BoundaryNode*> numbered = numbered_nodes(portion);
   std::vector<const BoundaryNode*> nodes;  // per polygon point
-  for (int index : polygon.node_index)
+  for (int index : domain.polygon.node_index)
     nodes.push_back(numbered[index]);
-  std::set<std::array<int, 2>> loop_edges;  // point pairs of the loops' own edges
-  for (std::size_t l = 0, first = 0; l < loops.size(); first += loops[l].size(), ++l) {
-    const int size = static_cast<int>(loops[l].size());
-    for (int i = 0; i < size; ++i) {
-      const int a = static_cast<int>(first) + i, b = static_cast<int>(first) + (i + 1) % size;
-      loop_edges.insert({std::min(a, b), std::max(a, b)});
-    }
-  }
+  const std::set<std::array<int, 2>> loop_edges = loop_edges_of(loops);
   for (int round = 0; facets.ok() && round < options.max_chord_splits; ++round) {
     const auto chords = chords_to_split(mesh, nodes, loop_edges, facets.triangles);
     if (chords.empty())
@@ -302,41 +332,70 @@ PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const P
                         0.5 * (point_2d[a][1] + point_2d[b][1])};
       interior_points.push_back({middle.x, middle.y});
       result.interior.push_back(options.direct ? (point_3d[a] + point_3d[b]) * 0.5
-                                               : surface_point(middle));
+                                               : surface_point(domain, patch, middle));
       ++result.chords_split;
     }
     facets = triangulate_polygon_2d(loops_2d, interior_points);
   }
-  result.failure = facets.failure;
+  return facets;
+}
+
+// Why the faceting failed.
+std::string faceting_error(const PolygonTriangulation2d& facets) {
   switch (facets.failure) {
     case TriangulationFailure::None:
       break;
     case TriangulationFailure::ShortLoop:
-      result.error = "a boundary with fewer than three points";
-      return result;
+      return "a boundary with fewer than three points";
     case TriangulationFailure::SharedPoint:
-      result.error = "two boundary points share a parameter point";
-      return result;
+      return "two boundary points share a parameter point";
     case TriangulationFailure::SelfIntersection:
-      result.error =
-          "the boundary intersects itself in the parameter domain (" + facets.detail + ")";
-      return result;
+      return "the boundary intersects itself in the parameter domain (" + facets.detail + ")";
     case TriangulationFailure::ForeignPoint:
     case TriangulationFailure::NoTriangle:
-      result.error = "no facet inside the trimmed patch";
-      return result;
+      return "no facet inside the trimmed patch";
+  }
+  return "";
+}
+
+PatchTessellation tessellate_in(const Mesh& mesh, TrimmingDomain domain, const Portion& portion,
+                                const LoftedPatch& patch, double edge_length,
+                                const TessellationOptions& options) {
+  PatchTessellation result;
+  result.domain = domain;
+  if (options.direct && domain == TrimmingDomain::DevelopedDisc) {
+    result.failure = TriangulationFailure::SelfIntersection;
+    result.error = "the section points cannot be placed on the developed disc";
+    return result;
+  }
+  const DomainPolygon in_domain = domain_polygon(domain, portion, patch);
+  const double spacing = options.spacing_edges * edge_length * in_domain.spacing_scale;
+  const double clearance = options.clearance * spacing;
+  // Trimming: the candidate points inside the hole's and outside the islands' boundaries.
+  const std::vector<Vec2> interior_2d =
+      options.direct ? section_points_inside(in_domain, patch, spacing, clearance, result.interior)
+                     : grid_points_inside(in_domain, patch, spacing, clearance, result.interior);
+  const std::vector<const BoundaryNode*> numbered = numbered_nodes(portion);
+  const PolygonTriangulation2d facets =
+      facets_with_chords_split(mesh, in_domain, patch, numbered, interior_2d, options, result);
+  result.failure = facets.failure;
+  if (facets.failure != TriangulationFailure::None) {
+    result.error = faceting_error(facets);
+    return result;
   }
   std::vector<Point> kept;  // interior points the triangulation did not merge
   for (int i : facets.kept_interior)
     kept.push_back(result.interior[i]);
   result.interior = std::move(kept);
   // Triangle indices in numbered_nodes order, then the interior points.
-  const int polygon_points = static_cast<int>(all_points.size());
+  int polygon_points = 0;
+  for (const auto& loop : in_domain.polygon.loops)
+    polygon_points += static_cast<int>(loop.size());
   const int node_count = static_cast<int>(numbered.size());
   auto renumber = [&](int k) {
-    return k < polygon_points ? polygon.node_index[k] : k - polygon_points + node_count;
+    return k < polygon_points ? in_domain.polygon.node_index[k] : k - polygon_points + node_count;
   };
-  const bool flip = signed_area_2d(loops[0]) < 0.0;
+  const bool flip = signed_area_2d(in_domain.polygon.loops[0]) < 0.0;
   for (auto tri : facets.triangles) {
     if (flip)
       std::swap(tri[1], tri[2]);
