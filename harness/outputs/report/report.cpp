@@ -281,16 +281,16 @@ std::string leaderboard_html(const Leaderboard& board) {
 std::string html_table(const SummaryTable& table) {
   std::string out =
       "<table class=\"summary\">\n<thead><tr><th>method</th><th>case kind</th>"
-      "<th>jobs</th><th>ok</th><th>fallback</th>";
+      "<th>noise %</th><th>jobs</th><th>ok</th><th>fallback</th>";
   for (const auto& metric : table.metrics) {
     out += fmt::format("<th>{}<br>median</th><th>IQR</th>", html_escape(metric));
   }
   out += "<th>note</th></tr></thead>\n<tbody>\n";
   for (const auto& row : table.rows) {
     const auto share = row.fallback_share();
-    out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>",
+    out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{:g}</td><td>{}</td><td>{}</td><td>{}</td>",
                        row.flagged() ? " class=\"flagged\"" : "", html_escape(row.method),
-                       html_escape(row.case_kind), row.jobs, row.ok,
+                       html_escape(row.case_kind), row.noise_percent, row.jobs, row.ok,
                        share ? fmt::format("{:.3g}", *share) : std::string("-"));
     for (const auto& stats : row.stats) {
       out += stats ? fmt::format("<td>{:.3g}</td><td>{:.3g}</td>", stats->median, stats->iqr())
@@ -399,13 +399,15 @@ std::string report_html(const ResultsData& data, const Leaderboard& board,
   }
   out += "</p>\n";
 
-  out += "<h2 id=\"summary\">Summary: method &times; case kind</h2>\n" + html_table(table);
+  out += "<h2 id=\"summary\">Summary: method &times; case kind &times; noise level</h2>\n" +
+         html_table(table);
   out += fmt::format(
-      "<p>Medians over every job of the row that has the metric (all noise levels, seeds and "
-      "users); IQR = q3 - q1. Highlighted rows: <em>few</em> = fewer than {} values in a "
-      "column (add seeds or noise levels); <em>spread</em> = IQR above {:g} % of the median "
-      "(the row mixes cases that behave differently; read results.csv).</p>\n",
-      table.options.min_samples, 100.0 * table.options.max_relative_spread);
+      "<p>Medians over every job of the row that has the metric (all seeds and users); IQR = "
+      "q3 - q1. Highlighted rows, with the reason in the note: <em>few</em> = fewer than {} "
+      "values in a column because jobs of the row did not end ok (read their messages); "
+      "<em>spread</em> = the third quartile above {:g} times the first, time excepted (the "
+      "row's jobs fall into groups an order of magnitude apart; read results.csv).</p>\n",
+      table.options.min_samples, table.options.max_quartile_ratio);
 
   out += "<h2 id=\"plots\">Plots</h2>\n";
   if (plots_note.empty()) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 
 namespace holebench::harness::report {
@@ -79,11 +80,19 @@ std::string SummaryRow::note() const {
       fewest = with_values == 0 ? s->n : std::min(fewest, s->n);
       ++with_values;
     }
-    note +=
-        few.size() == with_values ? fmt::format("few: n={}", fewest) : "few: " + join(few, ", ");
+    note += few.size() == with_values
+                ? fmt::format("few: n={} of {} jobs, the rest not ok", fewest, jobs)
+                : "few: " + join(few, ", ") + " (missing where jobs were not ok)";
   }
-  if (!spread.empty())
-    note += (note.empty() ? "" : "; ") + ("spread: " + join(spread, ", "));
+  if (!spread.empty()) {
+    std::vector<std::string> quartiles;
+    for (std::size_t i = 0; i < spread.size(); ++i) {
+      const auto [q1, q3] = spread_quartiles[i];
+      quartiles.push_back(
+          fmt::format("{} (q1 {}, q3 {})", spread[i], short_number(q1), short_number(q3)));
+    }
+    note += (note.empty() ? "" : "; ") + ("spread: " + join(quartiles, ", "));
+  }
   return note;
 }
 
@@ -103,14 +112,15 @@ SummaryTable summarize(const ResultsData& data, const SummaryOptions& options) {
       table.metrics.push_back(metric);
   }
 
-  std::map<std::pair<std::string, std::string>, std::vector<const JobRecord*>> groups;
+  std::map<std::tuple<std::string, std::string, double>, std::vector<const JobRecord*>> groups;
   for (const auto& record : data.records) {
-    groups[{record.job.method_id, record.case_family + "/" + record.case_kind}].push_back(&record);
+    groups[{record.job.method_id, record.case_family + "/" + record.case_kind,
+            record.job.noise_percent}]
+        .push_back(&record);
   }
   for (const auto& [key, records] : groups) {
     SummaryRow row;
-    row.method = key.first;
-    row.case_kind = key.second;
+    std::tie(row.method, row.case_kind, row.noise_percent) = key;
     row.jobs = records.size();
     row.ok = static_cast<std::size_t>(
         std::count_if(records.begin(), records.end(),
@@ -122,16 +132,20 @@ SummaryTable summarize(const ResultsData& data, const SummaryOptions& options) {
     }
     for (const auto& metric : table.metrics) {
       std::vector<double> values;
+      bool missing_where_not_ok = false;
       for (const JobRecord* record : records) {
         if (const double* value = record->metric(metric))
           values.push_back(*value);
+        else if (record->status != JobStatus::Ok)
+          missing_where_not_ok = true;
       }
       const auto stats = compute_stats(values);
-      if (stats && stats->n < options.min_samples)
+      if (stats && stats->n < options.min_samples && missing_where_not_ok)
         row.few.push_back(metric);
-      if (stats && stats->iqr() > 0.0 &&
-          stats->iqr() > options.max_relative_spread * std::fabs(stats->median)) {
+      if (stats && stats->n >= options.min_samples && metric != metric_names::kTimeMethodS &&
+          stats->q3 > 0.0 && stats->q3 > options.max_quartile_ratio * stats->q1) {
         row.spread.push_back(metric);
+        row.spread_quartiles.emplace_back(stats->q1, stats->q3);
       }
       row.stats.push_back(stats);
     }
@@ -151,8 +165,8 @@ std::string summary_markdown(const ResultsData& data, const SummaryTable& table)
                      c.build_type.empty() ? "?" : c.build_type,
                      c.created_utc.empty() ? "?" : c.created_utc, data.records.size(), ok);
 
-  out += "| method | case kind | jobs | ok | fallback |";
-  std::string rule = "| --- | --- | ---: | ---: | ---: |";
+  out += "| method | case kind | noise % | jobs | ok | fallback |";
+  std::string rule = "| --- | --- | ---: | ---: | ---: | ---: |";
   for (const auto& metric : table.metrics) {
     out += fmt::format(" {} | IQR |", metric);
     rule += " ---: | ---: |";
@@ -160,8 +174,8 @@ std::string summary_markdown(const ResultsData& data, const SummaryTable& table)
   out += " note |\n" + rule + " --- |\n";
   for (const auto& row : table.rows) {
     const auto share = row.fallback_share();
-    out += fmt::format("| {} | {} | {} | {} | {} |", markdown_cell(row.method),
-                       markdown_cell(row.case_kind), row.jobs, row.ok,
+    out += fmt::format("| {} | {} | {:g} | {} | {} | {} |", markdown_cell(row.method),
+                       markdown_cell(row.case_kind), row.noise_percent, row.jobs, row.ok,
                        share ? short_number(*share) : std::string("-"));
     for (const auto& stats : row.stats) {
       out +=
@@ -175,26 +189,28 @@ std::string summary_markdown(const ResultsData& data, const SummaryTable& table)
   out += fmt::format(
       "\n`fallback`: the share of the row's hole reports (jobs of every status) that a "
       "stand-in handled instead of the method's own path (the hole records' `fallback`; `-`: "
-      "no hole reported). Medians over every job of the row that has the metric (all noise "
-      "levels, seeds and users); IQR = q3 - q1 (linear interpolation); `-`: no job of the row "
-      "has it. Lengths are relative to the bounding-box diagonal (`_rel_diag`), times in "
-      "seconds.\n\n"
-      "{} of {} rows flagged. `few`: fewer than {} values in that column; add seeds or noise "
-      "levels before trusting the median. `spread`: IQR above {:g} % of the median; the row "
-      "mixes cases or noise levels that behave differently; read the per-job values "
-      "(results.csv) or split the row.\n",
-      flagged, table.rows.size(), table.options.min_samples,
-      100.0 * table.options.max_relative_spread);
+      "no hole reported). A row is one method, one case kind and one noise level; its medians are "
+      "over every job of the row that has the metric (all seeds and users); IQR = q3 - q1 "
+      "(linear interpolation); `-`: no job of the row has it. Lengths are relative to the "
+      "bounding-box diagonal (`_rel_diag`), times in seconds.\n\n"
+      "{} of {} rows flagged, each with its reason. `few`: fewer than {} values in that column "
+      "because jobs of the row did not end ok, so the median stands for the survivors only: "
+      "read the failed jobs' messages. `spread`: the third quartile above {:g} times the first "
+      "(time excepted): the row's jobs fall into groups an order of magnitude apart, which the "
+      "median hides; read the per-job values (results.csv).\n",
+      flagged, table.rows.size(), table.options.min_samples, table.options.max_quartile_ratio);
   return out;
 }
 
 std::string summary_csv(const SummaryTable& table) {
   std::string out =
-      "method,case_kind,jobs,ok,holes,fallback_holes,metric,n,median,q1,q3,iqr,min,max,note\n";
+      "method,case_kind,noise_percent,jobs,ok,holes,fallback_holes,metric,n,median,q1,q3,iqr,min,"
+      "max,note\n";
   for (const auto& row : table.rows) {
     for (std::size_t i = 0; i < table.metrics.size(); ++i) {
-      out += fmt::format("{},{},{},{},{},{},{},", csv_field(row.method), csv_field(row.case_kind),
-                         row.jobs, row.ok, row.holes, row.fallback_holes, table.metrics[i]);
+      out += fmt::format("{},{},{},{},{},{},{},{},", csv_field(row.method),
+                         csv_field(row.case_kind), row.noise_percent, row.jobs, row.ok, row.holes,
+                         row.fallback_holes, table.metrics[i]);
       if (const auto& s = row.stats[i]) {
         out += fmt::format("{},{},{},{},{},{},{},", s->n, s->median, s->q1, s->q3, s->iqr(), s->min,
                            s->max);
@@ -240,13 +256,14 @@ std::string summary_latex(const SummaryTable& table) {
                                                          : latex_escape(rows[i].method);
   };
 
-  begin_table("Jobs per method and case kind; fallback share: holes a stand-in handled", "jobs",
-              "llrrr", "Method & Case kind & Jobs & OK & Fallback share");
+  begin_table(
+      "Jobs per method, case kind and noise level; fallback share: holes a stand-in handled",
+      "jobs", "llrrrr", "Method & Case kind & Noise \\% & Jobs & OK & Fallback share");
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     const auto& row = table.rows[i];
     const auto share = row.fallback_share();
-    out += fmt::format("    {} & {} & {} & {} & {} \\\\\n", method_cell(i),
-                       latex_escape(row.case_kind), row.jobs, row.ok,
+    out += fmt::format("    {} & {} & {:g} & {} & {} & {} \\\\\n", method_cell(i),
+                       latex_escape(row.case_kind), row.noise_percent, row.jobs, row.ok,
                        share ? latex_number(*share) : std::string("--"));
   }
   end_table();
@@ -255,11 +272,12 @@ std::string summary_latex(const SummaryTable& table) {
     const auto& metric = table.metrics[m];
     begin_table(fmt::format("\\texttt{{{}}}: median, interquartile range, minimum and maximum",
                             latex_escape(metric)),
-                latex_label(metric), "llrrrrr",
-                "Method & Case kind & $n$ & Median & IQR & Min & Max");
+                latex_label(metric), "llrrrrrr",
+                "Method & Case kind & Noise \\% & $n$ & Median & IQR & Min & Max");
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
       const auto& row = table.rows[i];
-      out += fmt::format("    {} & {} & ", method_cell(i), latex_escape(row.case_kind));
+      out += fmt::format("    {} & {} & {:g} & ", method_cell(i), latex_escape(row.case_kind),
+                         row.noise_percent);
       if (const auto& s = row.stats[m]) {
         out += fmt::format("{} & {} & {} & {} & {} \\\\\n", s->n, latex_number(s->median),
                            latex_number(s->iqr()), latex_number(s->min), latex_number(s->max));

@@ -1,21 +1,21 @@
-// `holebench report` on the hand-written fixture tests/harness/fixtures/report_results.json:
+// `holebench report` on the hand-written fixture tests/harness/fixtures/report_results.json.
+// Its records, by row (method x case kind x noise level):
 //
-// | method        | case kind         | jobs | ok | holes (fallback) | hausdorff_rel_diag values |
-// time_method_s | | brep_guidance | box/face_interior | 3    | 2  | 3 (1)            | 0, 0.001,
-// 0.1             | .5, .6, .7    | | brep_guidance | brep/k3/inner     | 1    | 0  | 0 | - | - |
-// | liepa_cgal    | box/face_interior | 4    | 4  | 4 (0)            | .125, .25, .375, .875     |
-// 1, 1.5, 2, 2  | | liepa_cgal    | brep/k3/inner     | 2    | 1  | 0                | 0.2 | 3 |
+//   row  method         case kind          noise  jobs (status)       hausdorff_rel_diag  time
+//   0    brep_guidance  box/face_interior  0      2 ok                0, 0.001            .5, .7
+//   1    brep_guidance  box/face_interior  5      1 partial           0.1                 .6
+//   2    brep_guidance  brep/k3/inner      0      1 method_failed     -                   -
+//   3    liepa_cgal     box/face_interior  0      2 ok                .125, .25           1, 1.5
+//   4    liepa_cgal     box/face_interior  5      2 ok                .375, .875          2, 2
+//   5    liepa_cgal     brep/k3/inner      0      1 ok                0.2                 3
+//   6    liepa_cgal     brep/k3/inner      5      1 crash             -                   -
 //
-// Fallback share: 1 of the 3 holes of brep_guidance x box/face_interior (the partial job's,
-// guided instead of closed) = 0.333; 0 of 4 for liepa_cgal; none without holes.
-//
-// Quantiles interpolate linearly at p * (n - 1) in the sorted values. For liepa_cgal x
-// box/face_interior, Hausdorff: median = (0.25 + 0.375) / 2 = 0.3125; q1 at 0.75 =
-// 0.125 + 0.75 * 0.125 = 0.21875; q3 at 2.25 = 0.375 + 0.25 * 0.5 = 0.5; IQR 0.28125 >
-// 0.5 * 0.3125: flagged "spread". Time: median 1.75, q1 1.375, q3 2, IQR 0.625 (not
-// flagged). new_vertex_mean_error_rel_diag is in 2 of its 4 jobs (0.001, 0.003): flagged
-// "few" (< 3 values). brep_guidance x box/face_interior, Hausdorff median 0.001,
-// classification 0.5, 1, 1: median 1.
+// Fallback share: brep_guidance's partial job guided its one hole instead of closing it: 1 of
+// 1 in row 1, 0 of 2 in row 0; rows without holes have none. Quantiles interpolate linearly at
+// p * (n - 1) in the sorted values: row 3's Hausdorff median (0.125 + 0.25) / 2 = 0.1875, q1
+// 0.125 + 0.25 * 0.125 = 0.15625, q3 0.21875; its time median 1.25, IQR 0.25. No row is
+// flagged: no column is short because of a job that failed with values missing beside ok
+// ones, and no column has three values. The flags are tested on records made in the test.
 #include "harness/outputs/report/report.h"
 
 #include "tests/harness/text_file.h"
@@ -28,6 +28,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace holebench::harness::report {
 namespace {
@@ -70,37 +71,89 @@ TEST(Report, StatsInterpolateQuantilesLinearly) {
   EXPECT_EQ(one->iqr(), 0.0);
 }
 
-TEST(Report, SummaryRowsHaveTheHandComputedMediansAndFlags) {
+TEST(Report, SummaryRowsHaveTheHandComputedMedians) {
   const auto table = summarize(read_results_json(kFixture));
   ASSERT_EQ(table.metrics, summary_metrics());  // every column is present in the fixture
-  ASSERT_EQ(table.rows.size(), 4u);
+  ASSERT_EQ(table.rows.size(), 7u);
   EXPECT_EQ(table.rows[0].method, "brep_guidance");
-  EXPECT_EQ(table.rows[1].case_kind, "brep/k3/inner");
-  const auto& liepa = table.rows[2];
+  EXPECT_EQ(table.rows[1].noise_percent, 5.0);
+  EXPECT_EQ(table.rows[2].case_kind, "brep/k3/inner");
+  const auto& liepa = table.rows[3];
   EXPECT_EQ(liepa.method, "liepa_cgal");
   EXPECT_EQ(liepa.case_kind, "box/face_interior");
-  EXPECT_EQ(liepa.jobs, 4u);
-  EXPECT_EQ(liepa.ok, 4u);
-  EXPECT_EQ(liepa.holes, 4u);
+  EXPECT_EQ(liepa.noise_percent, 0.0);
+  EXPECT_EQ(liepa.jobs, 2u);
+  EXPECT_EQ(liepa.ok, 2u);
+  EXPECT_EQ(liepa.holes, 2u);
   EXPECT_EQ(liepa.fallback_share(), 0.0);
-  EXPECT_EQ(liepa.stats[0]->median, 0.3125);
-  EXPECT_EQ(liepa.stats[4]->median, 1.75);
-  EXPECT_EQ(liepa.stats[4]->iqr(), 0.625);
+  EXPECT_EQ(liepa.stats[0]->median, 0.1875);
+  EXPECT_EQ(liepa.stats[4]->median, 1.25);
+  EXPECT_EQ(liepa.stats[4]->iqr(), 0.25);
   EXPECT_FALSE(liepa.stats[3]);  // no classification for liepa_cgal
-  EXPECT_EQ(liepa.note(),
-            "few: new_vertex_mean_error_rel_diag; spread: hausdorff_rel_diag, "
-            "hole_mean_distance_rel_diag");
-  const auto& guidance = table.rows[0];
-  EXPECT_EQ(guidance.jobs, 3u);
-  EXPECT_EQ(guidance.ok, 2u);  // the partial job is not ok
-  EXPECT_EQ(guidance.holes, 3u);
-  EXPECT_EQ(guidance.fallback_holes, 1u);
-  EXPECT_EQ(guidance.fallback_share(), 1.0 / 3.0);
-  EXPECT_FALSE(table.rows[1].fallback_share());  // no hole reported
-  EXPECT_EQ(guidance.stats[0]->median, 0.001);
-  EXPECT_EQ(guidance.stats[3]->median, 1.0);
-  EXPECT_FALSE(table.rows[1].flagged());        // no values at all: nothing to flag
-  EXPECT_EQ(table.rows[3].note(), "few: n=1");  // every column of liepa_cgal x brep has 1 value
+  EXPECT_EQ(table.rows[4].stats[0]->median, 0.625);
+  const auto& guided = table.rows[1];
+  EXPECT_EQ(guided.jobs, 1u);
+  EXPECT_EQ(guided.ok, 0u);  // the partial job is not ok
+  EXPECT_EQ(guided.holes, 1u);
+  EXPECT_EQ(guided.fallback_holes, 1u);
+  EXPECT_EQ(guided.fallback_share(), 1.0);
+  EXPECT_EQ(table.rows[0].fallback_share(), 0.0);
+  EXPECT_FALSE(table.rows[2].fallback_share());  // no hole reported
+  EXPECT_EQ(table.rows[0].stats[0]->median, 0.0005);
+  EXPECT_EQ(table.rows[0].stats[3]->median, 1.0);
+  for (const auto& row : table.rows)
+    EXPECT_FALSE(row.flagged()) << row.method << " " << row.case_kind << " " << row.note();
+}
+
+// A record of method "m" on a box case of kind `kind` at `noise` with `status` and `metrics`.
+JobRecord summary_record(const std::string& kind, double noise, JobStatus status,
+                         std::vector<MetricValue> metrics) {
+  JobRecord r;
+  r.job.case_id = "box/" + kind;
+  r.job.method_id = "m";
+  r.job.noise_percent = noise;
+  r.case_family = "box";
+  r.case_kind = kind;
+  r.status = status;
+  r.metrics = std::move(metrics);
+  return r;
+}
+
+TEST(Report, SummaryFlagsFireOnlyWhereAReaderShouldActWithTheReason) {
+  const std::string hd = "hausdorff_rel_diag", vertices = "new_vertex_mean_error_rel_diag",
+                    time = "time_method_s";
+  ResultsData data;
+  // Two of three jobs failed: the one value stands for the survivor only.
+  data.records.push_back(summary_record("edge", 0, JobStatus::Ok, {{hd, 0.1}}));
+  data.records.push_back(summary_record("edge", 0, JobStatus::MethodFailed, {}));
+  data.records.push_back(summary_record("edge", 0, JobStatus::Crash, {}));
+  // Every job ok; new vertices in one of them only (a patch without interior vertices has
+  // none): not a reason.
+  data.records.push_back(summary_record("corner", 0, JobStatus::Ok, {{hd, 0.1}, {vertices, 1}}));
+  data.records.push_back(summary_record("corner", 0, JobStatus::Ok, {{hd, 0.2}}));
+  // The same kind at another noise level is a row of its own.
+  data.records.push_back(summary_record("corner", 5, JobStatus::Ok, {{hd, 3.0}}));
+  // Exact closings beside approximate ones: quartiles 1.75e-16 and 0.00125; the time's
+  // quartiles are as far apart, but time is not judged.
+  const double hds[] = {1e-16, 2e-16, 0.001, 0.002}, times[] = {0.01, 0.02, 1, 2};
+  for (int i = 0; i < 4; ++i) {
+    data.records.push_back(
+        summary_record("face_interior", 0, JobStatus::Ok, {{hd, hds[i]}, {time, times[i]}}));
+  }
+  // Three values within a factor of 10: no spread, whatever the IQR against the median.
+  for (double value : {0.01, 0.05, 0.09})
+    data.records.push_back(summary_record("island", 0, JobStatus::Ok, {{hd, value}}));
+
+  const auto table = summarize(data);
+  ASSERT_EQ(table.rows.size(), 5u);  // corner 0, corner 5, edge, face_interior, island
+  EXPECT_EQ(table.rows[0].case_kind, "box/corner");
+  EXPECT_EQ(table.rows[1].noise_percent, 5.0);
+  EXPECT_FALSE(table.rows[0].flagged()) << table.rows[0].note();
+  EXPECT_FALSE(table.rows[1].flagged()) << table.rows[1].note();
+  EXPECT_EQ(table.rows[2].note(), "few: n=1 of 3 jobs, the rest not ok");
+  EXPECT_EQ(table.rows[3].spread, std::vector<std::string>{hd});
+  EXPECT_EQ(table.rows[3].note(), "spread: hausdorff_rel_diag (q1 1.75e-16, q3 0.00125)");
+  EXPECT_FALSE(table.rows[4].flagged()) << table.rows[4].note();
 }
 
 TEST(Report, WritesEveryFileWithTheRightNumbers) {
@@ -114,38 +167,41 @@ TEST(Report, WritesEveryFileWithTheRightNumbers) {
     EXPECT_TRUE(std::filesystem::exists(report / file)) << file;
   }
   EXPECT_FALSE(summary.plots_written);
-  EXPECT_EQ(summary.rows, 4u);
-  EXPECT_EQ(summary.flagged_rows, 3u);
+  EXPECT_EQ(summary.rows, 7u);
+  EXPECT_EQ(summary.flagged_rows, 0u);
 
   const auto md = read_text(report / "summary.md");
   EXPECT_EQ(md, console_summary(data, no_plots()));
-  EXPECT_NE(md.find("| liepa_cgal | box/face_interior | 4 | 4 | 0 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| - | - | 1.75 | 0.625 | few: new_vertex"), std::string::npos) << md;
-  EXPECT_NE(md.find("| brep_guidance | box/face_interior | 3 | 2 | 0.333 | 0.001 |"),
+  EXPECT_NE(md.find("| liepa_cgal | box/face_interior | 0 | 2 | 2 | 0 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| - | - | 1.25 | 0.25 |  |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| brep_guidance | box/face_interior | 5 | 1 | 0 | 1 | 0.1 |"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("| brep_guidance | brep/k3/inner | 1 | 0 | - | - | - |"), std::string::npos);
+  EXPECT_NE(md.find("| brep_guidance | brep/k3/inner | 0 | 1 | 0 | - | - | - |"),
+            std::string::npos);
+  EXPECT_NE(md.find("0 of 7 rows flagged"), std::string::npos) << md;
 
   const auto csv = read_text(report / "summary.csv");
-  EXPECT_EQ(csv.rfind("method,case_kind,jobs,ok,holes,fallback_holes,metric,n,median,q1,q3,iqr,"
-                      "min,max,note\n",
+  EXPECT_EQ(csv.rfind("method,case_kind,noise_percent,jobs,ok,holes,fallback_holes,metric,n,median,"
+                      "q1,q3,iqr,min,max,note\n",
                       0),
             0u);
-  EXPECT_NE(csv.find("liepa_cgal,box/face_interior,4,4,4,0,hausdorff_rel_diag,4,0.3125,0.21875,"
-                     "0.5,0.28125,0.125,0.875,\"few: "),
+  EXPECT_NE(csv.find("liepa_cgal,box/face_interior,0,2,2,2,0,hausdorff_rel_diag,2,0.1875,0.15625,"
+                     "0.21875,0.0625,0.125,0.25,\n"),
             std::string::npos)
       << csv;
-  EXPECT_NE(csv.find("brep_guidance,box/face_interior,3,2,3,1,time_method_s,"), std::string::npos);
-  EXPECT_NE(csv.find("brep_guidance,brep/k3/inner,1,0,0,0,time_method_s,0,,,,,,,\n"),
+  EXPECT_NE(csv.find("brep_guidance,box/face_interior,5,1,0,1,1,time_method_s,"),
+            std::string::npos);
+  EXPECT_NE(csv.find("brep_guidance,brep/k3/inner,0,1,0,0,0,time_method_s,0,,,,,,,\n"),
             std::string::npos);
 
   const auto tex = read_text(report / "tables.tex");
-  EXPECT_NE(tex.find("liepa\\_cgal & box/face\\_interior & 4 & 4 & 0 \\\\"), std::string::npos)
+  EXPECT_NE(tex.find("liepa\\_cgal & box/face\\_interior & 0 & 2 & 2 & 0 \\\\"), std::string::npos)
       << tex;
-  EXPECT_NE(tex.find("& box/face\\_interior & 3 & 2 & 0.333 \\\\"), std::string::npos) << tex;
-  EXPECT_NE(tex.find("& brep/k3/inner & 1 & 0 & -- \\\\"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("& box/face\\_interior & 5 & 1 & 0 & 1 \\\\"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("& brep/k3/inner & 0 & 1 & 0 & -- \\\\"), std::string::npos) << tex;
   EXPECT_NE(tex.find("\\texttt{hausdorff\\_rel\\_diag}"), std::string::npos);
-  EXPECT_NE(tex.find("0.312"), std::string::npos);
+  EXPECT_NE(tex.find("& box/face\\_interior & 5 & 2 & 0.625 &"), std::string::npos) << tex;
   for (const char* rule : {"\\toprule", "\\midrule", "\\bottomrule"}) {
     EXPECT_NE(tex.find(rule), std::string::npos) << rule;
   }
