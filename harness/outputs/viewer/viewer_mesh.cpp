@@ -36,7 +36,7 @@ struct ViewerPly {
   std::vector<std::uint8_t> patch;
   std::vector<std::array<std::int32_t, 2>> open_edges;  ///< the mesh's boundary edges
   double heat_scale_max_rel_diag = 0.0;                 ///< 0: not written
-  std::optional<Point> view_direction;                  ///< written where set
+  std::optional<render::Camera> view;                   ///< written where set
 };
 
 template <typename T>
@@ -51,8 +51,13 @@ std::string encode(const ViewerPly& ply) {
   std::string out = "ply\nformat binary_little_endian 1.0\ncomment holebench viewer mesh\n";
   if (ply.heat_scale_max_rel_diag > 0.0)
     out += fmt::format("comment heat_scale_max_rel_diag {:.17g}\n", ply.heat_scale_max_rel_diag);
-  if (const auto& d = ply.view_direction)
-    out += fmt::format("comment view_direction {:.9g} {:.9g} {:.9g}\n", (*d)[0], (*d)[1], (*d)[2]);
+  if (const auto& view = ply.view) {
+    const Point& d = view->direction;
+    const Point& t = view->target;
+    out += fmt::format("comment view_direction {:.9g} {:.9g} {:.9g}\n", d[0], d[1], d[2]);
+    out += fmt::format("comment view_target {:.9g} {:.9g} {:.9g}\n", t[0], t[1], t[2]);
+    out += fmt::format("comment view_distance {:.9g}\n", view->distance);
+  }
   out += fmt::format(
       "element vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
       "property float quality\nelement face {}\nproperty list uchar int vertex_indices\n"
@@ -163,9 +168,9 @@ std::string repaired_mesh_file(const harness::Job& job) {
 }
 
 void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path,
-                      const std::optional<Point>& view_direction) {
+                      const std::optional<render::Camera>& view) {
   ViewerPly ply = kept_faces(mesh, true);
-  ply.view_direction = view_direction;
+  ply.view = view;
   write_whole(encode(ply), path);
 }
 
@@ -202,11 +207,11 @@ void write_job_meshes(const Case& c, const Mesh& repaired, const harness::Job& j
   const auto complete = out_dir / complete_mesh_file(job);
   const auto holed = out_dir / holed_mesh_file(job);
   if (!std::filesystem::exists(complete) || !std::filesystem::exists(holed)) {
-    std::optional<Point> direction;
+    std::optional<render::Camera> view;
     if (!c.holes.empty())
-      direction = render::hole_view(c, 0).camera.direction;
-    write_plain_mesh(c.complete, complete, direction);
-    write_plain_mesh(c.input, holed, direction);
+      view = render::hole_view(c, 0).camera;
+    write_plain_mesh(c.complete, complete, view);
+    write_plain_mesh(c.input, holed, view);
   }
   write_repaired_mesh(c, repaired, out_dir / repaired_mesh_file(job), options, complete_scene);
 }

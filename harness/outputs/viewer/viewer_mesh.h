@@ -9,8 +9,9 @@
 //   element edge K: int vertex1, vertex2 (the open boundary edges: holes left open)
 // and, in the repaired mesh, "comment heat_scale_max_rel_diag X": the case's heat scale
 // (render/heat_map.h), the same for every method of the case; in the complete and holed
-// meshes, "comment view_direction X Y Z": the direction the first hole's close-up looks
-// along (render/close_up.h's hole_view), where the viewer's camera starts.
+// meshes, the first hole's close-up camera (render/close_up.h's hole_view), where the viewer's
+// camera starts: "comment view_direction X Y Z" (the direction it looks along), "comment
+// view_target X Y Z" (the point it looks at) and "comment view_distance D" (from the target).
 // New faces are split into n x n smaller triangles with their own vertices (n from the
 // face's longest edge, ViewerMeshOptions), so that a distance that peaks inside a face (a
 // flat cap over a corner) shows: a colour interpolated from the patch's own vertices alone
@@ -19,6 +20,7 @@
 
 #include "core/case.h"
 #include "core/mesh.h"
+#include "harness/outputs/render/snapshot.h"
 #include "harness/results/record.h"
 
 #include <filesystem>
@@ -45,12 +47,13 @@ std::string complete_mesh_file(const harness::Job& job);
 std::string holed_mesh_file(const harness::Job& job);
 std::string repaired_mesh_file(const harness::Job& job);
 
-/// Writes a mesh without distances (every quality 0, every patch flag 0), with the view
-/// direction in its header where one is given. The file appears
+/// Writes a mesh without distances (every quality 0, every patch flag 0), with the first
+/// hole's close-up camera in its header where one is given (comments view_direction,
+/// view_target and view_distance: where the viewer's camera starts). The file appears
 /// whole or not at all (written under a temporary name, then renamed), so that jobs of the
 /// same case in parallel processes may write it at once. Throws std::runtime_error.
 void write_plain_mesh(const Mesh& mesh, const std::filesystem::path& path,
-                      const std::optional<Point>& view_direction = std::nullopt);
+                      const std::optional<render::Camera>& view = std::nullopt);
 
 /// Writes the repaired mesh with its new faces split and coloured by distance to
 /// `c.complete`; `complete_scene` (optional): an Embree scene of `c.complete` built by the

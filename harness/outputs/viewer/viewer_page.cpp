@@ -167,11 +167,14 @@ ViewerSection write_viewer(const harness::ResultsData& data,
   section.cases = cases.size();
   section.html = section_html(fmt::format(
       "<p>Per case, the complete model, the holed input and each method's repaired mesh, as the "
-      "run wrote them (<code>meshes/*.ply</code>). Drag to turn, scroll to zoom, right-drag to "
-      "pan; tick the meshes to show them side by side. Kept faces are grey; the patch is "
+      "run wrote them (<code>meshes/*.ply</code>). It opens on the case's first hole, "
+      "seen as the close-up snapshot sees it; <em>whole model</em> shows the models whole. Drag "
+      "to turn, scroll to zoom, right-drag to pan; tick the meshes to show them side by side at "
+      "the same scale (one ticked: one at a time). Kept faces are grey; the patch is "
       "coloured by its distance to the complete model relative to the diagonal, on the case's "
       "scale (the bar; the same as in the snapshots); open holes are outlined in magenta.{}</p>\n"
-      "<div class=\"viewer-controls\"><select id=\"viewer-case\"></select> <span "
+      "<div class=\"viewer-controls\"><select id=\"viewer-case\"></select> <button "
+      "id=\"viewer-whole\" type=\"button\">whole model</button> <span "
       "id=\"viewer-toggles\"></span></div>\n"
       "<div class=\"viewer-box\"><canvas id=\"viewer-canvas\"></canvas><div "
       "id=\"viewer-bar\"></div></div>\n<p id=\"viewer-status\">The viewer needs JavaScript and "

@@ -13,9 +13,11 @@ const char* viewer_script() {
   var status = document.getElementById('viewer-status');
   var canvas = document.getElementById('viewer-canvas');
   var bar = document.getElementById('viewer-bar');
+  var wholeButton = document.getElementById('viewer-whole');
   var payloads = {};   // case index -> {name: base64 PLY}
   var parsed = {};     // case index -> {name: parsed PLY}
   var shown = {};      // case index -> {name: ticked}
+  var whole = {};      // case index -> true: the whole models, false: the first hole close up
   var current = -1;
   var followHash = window.location.hash === '#viewer';
   var three = null;    // {renderer, scene, camera, controls, group}
@@ -41,7 +43,7 @@ const char* viewer_script() {
     if (headerEnd < 0 || text.indexOf('binary_little_endian') < 0) throw new Error('not a viewer PLY');
     var counts = {vertex: 0, face: 0, edge: 0};
     var scale = 0;
-    var direction = null;
+    var direction = null, target = null, distance = 0;
     text.split('\n').forEach(function (line) {
       var w = line.trim().split(/\s+/);
       if (w[0] === 'element') counts[w[1]] = parseInt(w[2], 10);
@@ -49,6 +51,10 @@ const char* viewer_script() {
       if (w[0] === 'comment' && w[1] === 'view_direction') {
         direction = [parseFloat(w[2]), parseFloat(w[3]), parseFloat(w[4])];
       }
+      if (w[0] === 'comment' && w[1] === 'view_target') {
+        target = [parseFloat(w[2]), parseFloat(w[3]), parseFloat(w[4])];
+      }
+      if (w[0] === 'comment' && w[1] === 'view_distance') distance = parseFloat(w[2]);
     });
     var view = new DataView(buffer, headerEnd);
     var at = 0;
@@ -76,7 +82,7 @@ const char* viewer_script() {
       edges[2 * e + 1] = view.getInt32(at + 4, true);
     }
     return {positions: positions, quality: quality, faces: faces, patch: patch, edges: edges,
-            scale: scale, direction: direction};
+            scale: scale, direction: direction, target: target, distance: distance};
   }
 
   function gamma(c) { return [Math.pow(c[0], 1 / 2.2), Math.pow(c[1], 1 / 2.2), Math.pow(c[2], 1 / 2.2)]; }
@@ -98,8 +104,9 @@ const char* viewer_script() {
   }
 
   // One mesh as a three.js object: flat-shaded triangles (kept faces grey, the patch by its
-  // distance on the case's scale) and the open boundary edges.
-  function buildObject(ply, scaleMax) {
+  // distance on the case's scale) and the open boundary edges; `clipping`: planes that cut
+  // away what lies outside the mesh's window (the close-up), or none.
+  function buildObject(ply, scaleMax, clipping) {
     var count = ply.faces.length / 3;
     var positions = new Float32Array(count * 9);
     var colours = new Float32Array(count * 9);
@@ -119,7 +126,8 @@ const char* viewer_script() {
     setAttribute(geometry, 'color', new THREE.BufferAttribute(colours, 3));
     geometry.computeVertexNormals();
     var material = new THREE.MeshLambertMaterial({vertexColors: THREE.VertexColors,
-                                                  side: THREE.DoubleSide});
+                                                  side: THREE.DoubleSide,
+                                                  clippingPlanes: clipping});
     var object = new THREE.Group();
     object.add(new THREE.Mesh(geometry, material));
     if (ply.edges.length > 0) {
@@ -131,7 +139,7 @@ const char* viewer_script() {
       setAttribute(lines, 'position', new THREE.BufferAttribute(points, 3));
       var open = gamma(config.open);
       object.add(new THREE.LineSegments(lines, new THREE.LineBasicMaterial(
-          {color: new THREE.Color(open[0], open[1], open[2])})));
+          {color: new THREE.Color(open[0], open[1], open[2]), clippingPlanes: clipping})));
     }
     return object;
   }
@@ -143,6 +151,7 @@ const char* viewer_script() {
     renderer.setPixelRatio(window.devicePixelRatio || 1);
     renderer.setSize(canvas.clientWidth, canvas.clientHeight, false);
     renderer.setClearColor(new THREE.Color(config.background), 1);
+    renderer.localClippingEnabled = true;  // the close-up's windows
     var scene = new THREE.Scene();
     var camera = new THREE.PerspectiveCamera(40, canvas.clientWidth / canvas.clientHeight, 0.01, 100);
     camera.up.set(0, 0, 1);  // the models' z is up
@@ -211,23 +220,53 @@ const char* viewer_script() {
     var up = new THREE.Vector3(0, 0, 1);
     var right = new THREE.Vector3().crossVectors(direction, up).normalize();
     var screenUp = new THREE.Vector3().crossVectors(right, direction).normalize();
-    var box = new THREE.Box3();
-    box.setFromArray(parsed[index][meshes[0]].positions);
-    var one = box.getBoundingSphere(new THREE.Sphere());
+    var first = parsed[index][meshes[0]];
+    var atHole = !whole[index] && first.target !== null && first.distance > 0;
+    if (wholeButton) {
+      wholeButton.textContent = atHole ? 'whole model' : 'the hole';
+      wholeButton.disabled = first.target === null;
+    }
     var columns = Math.max(1, Math.ceil(Math.sqrt(ticked.length)));
     var rows = Math.max(1, Math.ceil(ticked.length / columns));
-    var step = 2.2 * one.radius;
+    var centre, reach;
+    if (atHole) {
+      // Each mesh in a window around the first hole, as the close-up snapshot frames it
+      // (the hole's boundary over about two thirds of the view), cut by clipping planes so
+      // that the windows stand side by side at the same scale.
+      centre = new THREE.Vector3(first.target[0], first.target[1], first.target[2]);
+      reach = 0.85 * first.distance * Math.tan(20 * Math.PI / 180);
+    } else {
+      var box = new THREE.Box3();
+      box.setFromArray(first.positions);
+      var one = box.getBoundingSphere(new THREE.Sphere());
+      centre = one.center;
+      reach = one.radius;
+    }
+    var step = (atHole ? 2.05 : 2.2) * reach;
     ticked.forEach(function (name, i) {
-      var object = buildObject(parsed[index][name], scaleMax);
       var column = i % columns - (columns - 1) / 2;
       var row = Math.floor(i / columns) - (rows - 1) / 2;
-      object.position.copy(right.clone().multiplyScalar(column * step)
-                               .addScaledVector(screenUp, -row * step));
+      var offset = right.clone().multiplyScalar(column * step).addScaledVector(screenUp, -row * step);
+      var clipping = [];
+      if (atHole) {
+        var c = centre.clone().add(offset);
+        [right, screenUp].forEach(function (axis) {
+          clipping.push(new THREE.Plane(axis.clone(), reach - axis.dot(c)));
+          clipping.push(new THREE.Plane(axis.clone().negate(), reach + axis.dot(c)));
+        });
+      }
+      var object = buildObject(parsed[index][name], scaleMax, clipping);
+      object.position.copy(offset);
       t.group.add(object);
     });
-    var sphere = new THREE.Sphere(one.center.clone(),
-                                  one.radius * Math.max(columns, rows) * 1.15);
-    var distance = 1.1 * sphere.radius / Math.sin(20 * Math.PI / 180);
+    var across = Math.max(columns, rows);
+    // At the hole: the rows and columns of windows fill the canvas (its aspect) with a small
+    // margin; whole: the old framing, the arrangement's bounding sphere in view.
+    var aspect = canvas.clientWidth / Math.max(1, canvas.clientHeight);
+    var halfHeight = 0.5 * step * Math.max(rows, columns / aspect);
+    var distance = atHole ? 1.05 * halfHeight / Math.tan(20 * Math.PI / 180)
+                          : 1.1 * reach * across * 1.15 / Math.sin(20 * Math.PI / 180);
+    var sphere = new THREE.Sphere(centre.clone(), reach * across);
     t.camera.position.copy(sphere.center).addScaledVector(direction, -distance);
     t.camera.near = distance / 100;
     t.camera.far = distance * 10;
@@ -235,7 +274,8 @@ const char* viewer_script() {
     t.controls.target.copy(sphere.center);
     t.controls.update();
     draw();
-    say('showing ' + ticked.length + ' of ' + meshes.length + ' meshes' +
+    say((atHole ? 'the first hole close up: ' : 'the whole model: ') + 'showing ' +
+        ticked.length + ' of ' + meshes.length + ' meshes' +
         (ticked.length > 1 ? ', left to right and row by row: ' + ticked.join(', ') : '') + '.');
   }
 
@@ -290,6 +330,13 @@ const char* viewer_script() {
     select.appendChild(option);
   });
   select.addEventListener('change', function () { choose(parseInt(select.value, 10)); });
+  if (wholeButton) {
+    wholeButton.addEventListener('click', function () {
+      if (current < 0 || !payloads[current]) return;
+      whole[current] = !whole[current];
+      show();
+    });
+  }
   if (cases.length > 0) choose(0);
   else say('no case has viewer meshes (run with snapshots)');
 })();
