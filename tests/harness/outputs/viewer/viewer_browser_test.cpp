@@ -149,7 +149,7 @@ TEST(ViewerBrowser, HeadlessChromiumDrawsTheModel) {
 
 // The viewer opens at the hole: on a 2 % hole at a corner of the L-block, with two methods'
 // repairs side by side, the first frame shows the patches (the heat map's colours) over at
-// least 5 % of the canvas. Seen whole, the same patches cover a fraction of a percent.
+// least 5 % of the canvas.
 TEST(ViewerBrowser, TheFirstFrameShowsThePatchOfTheChosenCase) {
   const std::string chromium = find_chromium();
   if (chromium.empty()) {
