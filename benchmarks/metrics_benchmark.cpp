@@ -190,13 +190,18 @@ BENCHMARK(BM_Hausdorff_CgalParallelTwoThreads)
 
 // Mean and RMS distance (error bound 1e-3 of the diagonal), both directions, alone and
 // as the evaluation computes them with the Hausdorff distance (scenes built outside).
+SurfaceDistanceOptions mean_benchmark_options(const Pair& p) {
+  SurfaceDistanceOptions options;
+  options.hausdorff.error_bound = 1e-4 * p.diagonal;
+  options.mean.error_bound = 1e-3 * p.diagonal;
+  return options;
+}
+
 void BM_MeanDistance_Ours(benchmark::State& state) {
   const Pair& p = pair(pair_name(state.range(0)));
   state.SetLabel(pair_name(state.range(0)));
   const embree::TriangleScene a_scene(p.a), b_scene(p.b);
-  SurfaceDistanceOptions options;
-  options.hausdorff.error_bound = 1e-4 * p.diagonal;
-  options.mean.error_bound = 1e-3 * p.diagonal;
+  const SurfaceDistanceOptions options = mean_benchmark_options(p);
   for (auto _ : state) {
     const auto a = directed_mean_distance(p.a, b_scene, options.mean);
     const auto b = directed_mean_distance(p.b, a_scene, options.mean);
@@ -209,9 +214,7 @@ void BM_SurfaceDistance_Ours(benchmark::State& state) {
   const Pair& p = pair(pair_name(state.range(0)));
   state.SetLabel(pair_name(state.range(0)));
   const embree::TriangleScene a_scene(p.a), b_scene(p.b);
-  SurfaceDistanceOptions options;
-  options.hausdorff.error_bound = 1e-4 * p.diagonal;
-  options.mean.error_bound = 1e-3 * p.diagonal;
+  const SurfaceDistanceOptions options = mean_benchmark_options(p);
   for (auto _ : state) {
     const auto d = surface_distance(p.a, a_scene, p.b, b_scene, options);
     benchmark::DoNotOptimize(d.mean());

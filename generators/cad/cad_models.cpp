@@ -1,6 +1,7 @@
 #include "generators/cad/cad_models.h"
 
 #include "core/boundary_loops.h"
+#include "core/environment_path.h"
 #include "core/errors.h"
 #include "core/geometry.h"
 #include "core/mesh_io.h"
@@ -20,9 +21,7 @@
 namespace holebench::generators {
 
 std::filesystem::path default_cad_data_dir() {
-  if (const char* dir = std::getenv("HOLEBENCH_CAD_DIR"); dir && *dir)
-    return dir;
-  return HOLEBENCH_DEFAULT_CAD_DIR;
+  return environment_path_or("HOLEBENCH_CAD_DIR", HOLEBENCH_DEFAULT_CAD_DIR);
 }
 
 std::vector<CadModelSource> cgal_cad_models(const std::filesystem::path& data_dir) {

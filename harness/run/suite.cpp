@@ -1,5 +1,6 @@
 #include "harness/run/suite.h"
 
+#include "core/environment_path.h"
 #include "core/errors.h"
 #include "harness/results/json_fields.h"
 #include "methods/external/predefined_external_methods.h"
@@ -20,9 +21,7 @@
 namespace holebench::harness {
 
 std::filesystem::path default_suites_dir() {
-  if (const char* dir = std::getenv("HOLEBENCH_SUITES_DIR"); dir && *dir)
-    return dir;
-  return HOLEBENCH_SUITES_DIR;
+  return environment_path_or("HOLEBENCH_SUITES_DIR", HOLEBENCH_SUITES_DIR);
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "harness/outputs/viewer/viewer_page.h"
 
+#include "core/environment_path.h"
 #include "harness/outputs/file_bytes.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/heat_map.h"
@@ -111,9 +112,7 @@ std::string section_html(const std::string& body) {
 std::filesystem::path three_dir(const ViewerOptions& options) {
   if (!options.three_dir.empty())
     return options.three_dir;
-  if (const char* dir = std::getenv("HOLEBENCH_THREE_DIR"); dir && *dir)
-    return dir;
-  return "/usr/share/javascript/three";
+  return environment_path_or("HOLEBENCH_THREE_DIR", "/usr/share/javascript/three");
 }
 
 ViewerSection write_viewer(const harness::ResultsData& data,
