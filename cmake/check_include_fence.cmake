@@ -7,7 +7,8 @@
 #   ROOT        the folder quoted includes are resolved against (the project's source root)
 #   FENCED_DIR  the folder whose .h, .hpp and .cpp files may not reach FORBIDDEN
 #   FORBIDDEN   the header, as it is written in an include ("core/case.h")
-# A quoted include that names no file under ROOT (a generated header, a library's) is not
+# Includes with quotes or angle brackets are followed, resolved against the including file's
+# folder, then ROOT; one that names no file there (a generated header, a library's) is not
 # followed. On a violation, prints each offending file with the chain of includes that
 # reaches FORBIDDEN, and exits with an error.
 cmake_minimum_required(VERSION 3.22)
@@ -17,43 +18,68 @@ foreach(argument ROOT FENCED_DIR FORBIDDEN)
   endif()
 endforeach()
 
-# The project headers `file` includes with quotes, as written ("core/mesh.h"), that exist
-# under ROOT.
-function(quoted_includes file result)
-  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
-  set(names "")
+# The project headers `file` includes, with quotes or angle brackets, as absolute paths: each
+# name resolved against the including file's folder first (a relative include), then ROOT.
+# A name that resolves to no file (a library's header, a generated one) is not followed.
+function(project_includes file result)
+  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]")
+  get_filename_component(folder "${file}" DIRECTORY)
+  set(paths "")
   foreach(line IN LISTS lines)
-    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*$" "\\1" name "${line}")
-    if(EXISTS "${ROOT}/${name}")
-      list(APPEND names "${name}")
-    endif()
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]([^>\"]+)[>\"].*$" "\\1" name
+                         "${line}")
+    foreach(base IN ITEMS "${folder}" "${ROOT}")
+      get_filename_component(path "${base}/${name}" ABSOLUTE)
+      if(EXISTS "${path}" AND NOT IS_DIRECTORY "${path}")
+        list(APPEND paths "${path}")
+        break()
+      endif()
+    endforeach()
   endforeach()
-  set(${result} "${names}" PARENT_SCOPE)
+  set(${result} "${paths}" PARENT_SCOPE)
+endfunction()
+
+# A path as the messages show it: relative to ROOT.
+function(shown_path path result)
+  file(RELATIVE_PATH relative "${ROOT}" "${path}")
+  set(${result} "${relative}" PARENT_SCOPE)
 endfunction()
 
 # Breadth-first over the includes of `start` (a path); sets `chain` to the includes from
 # start to FORBIDDEN ("a -> b -> core/case.h"), or to "" where FORBIDDEN is not reached.
 function(chain_to_forbidden start chain)
-  quoted_includes("${start}" queue)
+  get_filename_component(forbidden_path "${ROOT}/${FORBIDDEN}" ABSOLUTE)
+  project_includes("${start}" queue)
   set(seen "")
-  foreach(name IN LISTS queue)
-    set(via_${name} "${name}")
+  set(index 0)
+  foreach(path IN LISTS queue)
+    shown_path("${path}" shown)
+    set(via_${index} "${shown}")
+    set(key_${index} "${path}")
+    math(EXPR index "${index} + 1")
   endforeach()
-  while(queue)
-    list(POP_FRONT queue name)
-    if(name IN_LIST seen)
+  # via_<i>: the chain to the i-th path queued (variables named by index: paths hold '/').
+  set(next_index ${index})
+  set(position 0)
+  while(position LESS next_index)
+    set(path "${key_${position}}")
+    set(via "${via_${position}}")
+    math(EXPR position "${position} + 1")
+    if(path IN_LIST seen)
       continue()
     endif()
-    list(APPEND seen "${name}")
-    if(name STREQUAL FORBIDDEN)
-      set(${chain} "${via_${name}}" PARENT_SCOPE)
+    list(APPEND seen "${path}")
+    if(path STREQUAL forbidden_path)
+      set(${chain} "${via}" PARENT_SCOPE)
       return()
     endif()
-    quoted_includes("${ROOT}/${name}" next)
-    foreach(child IN LISTS next)
-      if(NOT child IN_LIST seen AND NOT DEFINED via_${child})
-        set(via_${child} "${via_${name}} -> ${child}")
-        list(APPEND queue "${child}")
+    project_includes("${path}" children)
+    foreach(child IN LISTS children)
+      if(NOT child IN_LIST seen)
+        shown_path("${child}" shown)
+        set(via_${next_index} "${via} -> ${shown}")
+        set(key_${next_index} "${child}")
+        math(EXPR next_index "${next_index} + 1")
       endif()
     endforeach()
   endwhile()

@@ -140,10 +140,19 @@ struct CaseCatalog::State {
           if (auto c = make_crease(*id))
             return std::move(*c);
           break;
-        case CaseIdKind::FacesRemoved:
+        case CaseIdKind::FacesRemoved: {
           if (auto c = make_faces_removed(*id))
             return std::move(*c);
+          // As before the parsed id: a face set that does not parse is tried as a punch
+          // target "faces" (loading the model, whose own error comes first).
+          CaseId punched = *id;
+          punched.kind = CaseIdKind::Punched;
+          punched.size = id->target;
+          punched.target = "faces";
+          if (auto c = make_punched_by_id(punched))
+            return std::move(*c);
           break;
+        }
         case CaseIdKind::Punched:
           if (auto c = make_punched_by_id(*id))
             return std::move(*c);

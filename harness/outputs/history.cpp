@@ -222,7 +222,10 @@ History compute_history(std::vector<HistoryRun> runs, const HistoryOptions& opti
         options.tolerances_of_suite
             ? options.tolerances_of_suite(history.runs[r].data.context.suite, &used_defaults)
             : Tolerances{};
-    if (used_defaults) {
+    if (used_defaults && !options.tolerances_of_suite) {
+      history.notes.push_back(
+          fmt::format("run {}: no tolerances given: judged by the built-in tolerances", r + 1));
+    } else if (used_defaults) {
       history.notes.push_back(
           fmt::format("run {} names no known suite ('{}'): judged by the built-in tolerances",
                       r + 1, history.runs[r].data.context.suite));

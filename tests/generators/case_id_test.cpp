@@ -73,7 +73,8 @@ TEST(CaseId, TextsOfNoFamilysShapeDoNotParse) {
 }
 
 TEST(CaseId, AnUnknownIdKeepsTheCatalogsError) {
-  for (const char* text : {"sphere/a/b/c", "box/nowhere", "solid/l_block/edge_convex/huge"}) {
+  for (const char* text : {"sphere/a/b/c", "box/nowhere", "solid/l_block/edge_convex/huge",
+                           "file/nomodel/faces/bogus"}) {
     try {
       make_case(text);
       ADD_FAILURE() << text << " was made";

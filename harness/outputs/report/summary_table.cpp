@@ -81,7 +81,7 @@ std::string SummaryRow::note() const {
       ++with_values;
     }
     note += few.size() == with_values
-                ? fmt::format("few: n={} of {} jobs, the rest not ok", fewest, jobs)
+                ? fmt::format("few: n={} of {} jobs, some not ok", fewest, jobs)
                 : "few: " + join(few, ", ") + " (missing where jobs were not ok)";
   }
   if (!spread.empty()) {

@@ -65,7 +65,7 @@ struct SummaryRow {
   /// fallback_holes / holes: the share of the row's holes that the method's own path did not
   /// handle (docs/results.md); nullopt when the row reports no hole.
   std::optional<double> fallback_share() const;
-  /// "" or the reasons, e.g. "few: n=1 of 2 jobs, the rest not ok; spread:
+  /// "" or the reasons, e.g. "few: n=1 of 2 jobs, some not ok; spread:
   /// hausdorff_rel_diag (q1 1e-16, q3 0.0003)" (few in every column with values: the smallest
   /// count; otherwise the short columns by name).
   std::string note() const;

@@ -224,7 +224,7 @@ const char* viewer_script() {
     var atHole = !whole[index] && first.target !== null && first.distance > 0;
     if (wholeButton) {
       wholeButton.textContent = atHole ? 'whole model' : 'the hole';
-      wholeButton.disabled = first.target === null;
+      wholeButton.disabled = first.target === null || !(first.distance > 0);
     }
     var columns = Math.max(1, Math.ceil(Math.sqrt(ticked.length)));
     var rows = Math.max(1, Math.ceil(ticked.length / columns));

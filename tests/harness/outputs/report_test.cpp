@@ -150,7 +150,7 @@ TEST(Report, SummaryFlagsFireOnlyWhereAReaderShouldActWithTheReason) {
   EXPECT_EQ(table.rows[1].noise_percent, 5.0);
   EXPECT_FALSE(table.rows[0].flagged()) << table.rows[0].note();
   EXPECT_FALSE(table.rows[1].flagged()) << table.rows[1].note();
-  EXPECT_EQ(table.rows[2].note(), "few: n=1 of 3 jobs, the rest not ok");
+  EXPECT_EQ(table.rows[2].note(), "few: n=1 of 3 jobs, some not ok");
   EXPECT_EQ(table.rows[3].spread, std::vector<std::string>{hd});
   EXPECT_EQ(table.rows[3].note(), "spread: hausdorff_rel_diag (q1 1.75e-16, q3 0.00125)");
   EXPECT_FALSE(table.rows[4].flagged()) << table.rows[4].note();

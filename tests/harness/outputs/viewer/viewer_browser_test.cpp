@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -112,9 +113,11 @@ std::filesystem::path make_report(const std::filesystem::path& dir,
   return summary.dir / "report.html";
 }
 
-/// The screenshot of `page` in headless Chromium, as the viewer's first frame shows it.
-render::Image screenshot(const std::string& chromium, const std::filesystem::path& page,
-                         const std::filesystem::path& dir) {
+/// The screenshot of `page` in headless Chromium, as the viewer's first frame shows it; none
+/// where Chromium failed (the failure is recorded).
+std::optional<render::Image> screenshot(const std::string& chromium,
+                                        const std::filesystem::path& page,
+                                        const std::filesystem::path& dir) {
   const auto shot = dir / "shot.png";
   const std::string command = fmt::format(
       "timeout 120 '{}' --headless --no-sandbox --use-angle=swiftshader "
@@ -122,7 +125,10 @@ render::Image screenshot(const std::string& chromium, const std::filesystem::pat
       "--virtual-time-budget=10000 --screenshot='{}' 'file://{}' > '{}' 2>&1",
       chromium, (dir / "profile").string(), shot.string(), page.string(),
       (dir / "chromium.log").string());
-  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\nsee " << (dir / "chromium.log");
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(status, 0) << command << "\nsee " << (dir / "chromium.log");
+  if (status != 0 || !std::filesystem::exists(shot))
+    return std::nullopt;
   return render::read_image(shot);
 }
 
@@ -137,8 +143,9 @@ TEST(ViewerBrowser, HeadlessChromiumDrawsTheModel) {
   }
   const auto dir = std::filesystem::temp_directory_path() /
                    fmt::format("holebench_viewer_browser_{}", ::getpid());
-  const render::Image image = screenshot(chromium, make_report(dir), dir);
-  const CanvasInShot canvas = find_canvas(image);
+  const auto image = screenshot(chromium, make_report(dir), dir);
+  ASSERT_TRUE(image) << "no screenshot in " << dir;
+  const CanvasInShot canvas = find_canvas(*image);
   ASSERT_GE(canvas.right - canvas.left + 1, 400) << "no viewer canvas in " << dir;
   ASSERT_GE(canvas.bottom - canvas.top + 1, 300) << "no viewer canvas in " << dir;
   EXPECT_GE(static_cast<double>(canvas.model_pixels), 0.03 * static_cast<double>(canvas.pixels))
@@ -160,8 +167,9 @@ TEST(ViewerBrowser, TheFirstFrameShowsThePatchOfTheChosenCase) {
       std::filesystem::temp_directory_path() / fmt::format("holebench_viewer_hole_{}", ::getpid());
   const auto page =
       make_report(dir, "solid/l_block/corner_ccc/small", {"liepa_cgal", "cgal_triangulate"});
-  const render::Image image = screenshot(chromium, page, dir);
-  const CanvasInShot canvas = find_canvas(image);
+  const auto image = screenshot(chromium, page, dir);
+  ASSERT_TRUE(image) << "no screenshot in " << dir;
+  const CanvasInShot canvas = find_canvas(*image);
   ASSERT_GE(canvas.right - canvas.left + 1, 400) << "no viewer canvas in " << dir;
   EXPECT_GE(static_cast<double>(canvas.patch_pixels), 0.05 * static_cast<double>(canvas.pixels))
       << "the patch covers " << canvas.patch_pixels << " of " << canvas.pixels
