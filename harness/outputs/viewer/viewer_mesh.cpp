@@ -57,6 +57,7 @@ std::string encode(const ViewerPly& ply) {
     out += fmt::format("comment view_direction {:.9g} {:.9g} {:.9g}\n", d[0], d[1], d[2]);
     out += fmt::format("comment view_target {:.9g} {:.9g} {:.9g}\n", t[0], t[1], t[2]);
     out += fmt::format("comment view_distance {:.9g}\n", view->distance);
+    out += fmt::format("comment view_field_of_view_degrees {:.9g}\n", view->field_of_view_degrees);
   }
   out += fmt::format(
       "element vertex {}\nproperty float x\nproperty float y\nproperty float z\n"

@@ -11,7 +11,8 @@
 // (render/heat_map.h), the same for every method of the case; in the complete and holed
 // meshes, the first hole's close-up camera (render/close_up.h's hole_view), where the viewer's
 // camera starts: "comment view_direction X Y Z" (the direction it looks along), "comment
-// view_target X Y Z" (the point it looks at) and "comment view_distance D" (from the target).
+// view_target X Y Z" (the point it looks at), "comment view_distance D" (from the target) and
+// "comment view_field_of_view_degrees A" (its full vertical angle).
 // New faces are split into n x n smaller triangles with their own vertices (n from the
 // face's longest edge, ViewerMeshOptions), so that a distance that peaks inside a face (a
 // flat cap over a corner) shows: a colour interpolated from the patch's own vertices alone

@@ -43,7 +43,7 @@ const char* viewer_script() {
     if (headerEnd < 0 || text.indexOf('binary_little_endian') < 0) throw new Error('not a viewer PLY');
     var counts = {vertex: 0, face: 0, edge: 0};
     var scale = 0;
-    var direction = null, target = null, distance = 0;
+    var direction = null, target = null, distance = 0, fieldOfView = 40;
     text.split('\n').forEach(function (line) {
       var w = line.trim().split(/\s+/);
       if (w[0] === 'element') counts[w[1]] = parseInt(w[2], 10);
@@ -55,6 +55,7 @@ const char* viewer_script() {
         target = [parseFloat(w[2]), parseFloat(w[3]), parseFloat(w[4])];
       }
       if (w[0] === 'comment' && w[1] === 'view_distance') distance = parseFloat(w[2]);
+      if (w[0] === 'comment' && w[1] === 'view_field_of_view_degrees') fieldOfView = parseFloat(w[2]);
     });
     var view = new DataView(buffer, headerEnd);
     var at = 0;
@@ -82,7 +83,8 @@ const char* viewer_script() {
       edges[2 * e + 1] = view.getInt32(at + 4, true);
     }
     return {positions: positions, quality: quality, faces: faces, patch: patch, edges: edges,
-            scale: scale, direction: direction, target: target, distance: distance};
+            scale: scale, direction: direction, target: target, distance: distance,
+            fieldOfView: fieldOfView};
   }
 
   function gamma(c) { return [Math.pow(c[0], 1 / 2.2), Math.pow(c[1], 1 / 2.2), Math.pow(c[2], 1 / 2.2)]; }
@@ -222,6 +224,10 @@ const char* viewer_script() {
     var screenUp = new THREE.Vector3().crossVectors(right, direction).normalize();
     var first = parsed[index][meshes[0]];
     var atHole = !whole[index] && first.target !== null && first.distance > 0;
+    // The close-up's field of view (the snapshot's camera), the viewer camera's too.
+    t.camera.fov = first.fieldOfView;
+    var halfAngle = first.fieldOfView / 2 * Math.PI / 180;
+    var halfAngleTan = Math.tan(halfAngle);
     if (wholeButton) {
       wholeButton.textContent = atHole ? 'whole model' : 'the hole';
       wholeButton.disabled = first.target === null || !(first.distance > 0);
@@ -234,7 +240,7 @@ const char* viewer_script() {
       // (the hole's boundary over about two thirds of the view), cut by clipping planes so
       // that the windows stand side by side at the same scale.
       centre = new THREE.Vector3(first.target[0], first.target[1], first.target[2]);
-      reach = 0.85 * first.distance * Math.tan(20 * Math.PI / 180);
+      reach = 0.85 * first.distance * halfAngleTan;
     } else {
       var box = new THREE.Box3();
       box.setFromArray(first.positions);
@@ -264,8 +270,8 @@ const char* viewer_script() {
     // margin; whole: the old framing, the arrangement's bounding sphere in view.
     var aspect = canvas.clientWidth / Math.max(1, canvas.clientHeight);
     var halfHeight = 0.5 * step * Math.max(rows, columns / aspect);
-    var distance = atHole ? 1.05 * halfHeight / Math.tan(20 * Math.PI / 180)
-                          : 1.1 * reach * across * 1.15 / Math.sin(20 * Math.PI / 180);
+    var distance = atHole ? 1.05 * halfHeight / halfAngleTan
+                          : 1.1 * reach * across * 1.15 / Math.sin(halfAngle);
     var sphere = new THREE.Sphere(centre.clone(), reach * across);
     t.camera.position.copy(sphere.center).addScaledVector(direction, -distance);
     t.camera.near = distance / 100;

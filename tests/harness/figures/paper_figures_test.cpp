@@ -2,8 +2,8 @@
 
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
-#include "harness/outputs/file_bytes.h"
 #include "harness/figures/slice_paper_figures.h"
+#include "harness/outputs/file_bytes.h"
 #include "harness/results/results_file.h"
 
 #include <fmt/format.h>
