@@ -29,6 +29,9 @@ ClassificationAccuracy classification_accuracy(const Case& c, const MethodResult
     accuracy.orientation_correct += orientation_compared && orientation;
     accuracy.convexity_correct += convexity;
     accuracy.decision_correct += decision;
+    const bool guided = report.arrow.has_value() && !report.closed;
+    accuracy.decision_handled +=
+        truth.expected_decision == Decision::Guide ? guided : report.closed;
     // Boundary kinds are defined for outer holes; they are compared where the method, too,
     // found the hole outer and computed them.
     if (truth.orientation == Orientation::Outer && got.orientation == Orientation::Outer &&

@@ -9,7 +9,10 @@
 //    convexity sequence is compared). Both empty (k = 1) counts as equal;
 //  - boundary kinds (outer holes of the truth only): equal as cyclic sequences, with the
 //    same rotation test;
-//  - decision: the method's decision (its `expected_decision` field) equals the truth's.
+//  - decision: the method's decision (its `expected_decision` field) equals the truth's;
+//  - decision handled: the hole was handled as the truth's decision says: closed where it
+//    says close automatically, guided (an arrow, the hole left open) where it says guide.
+//    This is the success measure of a method that guides by design (docs/results.md).
 // Reports without classification, and truths without labels, are not counted.
 #pragma once
 
@@ -29,7 +32,8 @@ struct ClassificationAccuracy {
   std::size_t boundary_kind_compared = 0;  ///< of the compared, those with an outer truth
   std::size_t boundary_kind_correct = 0;
   std::size_t decision_correct = 0;
-  std::size_t all_correct = 0;  ///< every applicable field correct
+  std::size_t decision_handled = 0;  ///< handled as the truth's decision says
+  std::size_t all_correct = 0;       ///< every applicable field correct
 };
 
 ClassificationAccuracy classification_accuracy(const Case& c, const MethodResult& result);

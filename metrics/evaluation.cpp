@@ -11,11 +11,14 @@
 #include "metrics/feature_recovery.h"
 #include "metrics/hole_matching.h"
 #include "metrics/kept_faces.h"
+#include "metrics/literature_metrics.h"
 #include "metrics/metric_names.h"
+#include "metrics/shared_faces.h"
 #include "metrics/surface_distance.h"
 #include "metrics/validity.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <memory>
 #include <optional>
 
@@ -147,30 +150,43 @@ PatchMean patch_mean(const Mesh& repaired, bool case_has_holes,
   return result;
 }
 
-// The hole region: the removed faces of the complete model against the repaired mesh, and
-// the patch against the complete model (the larger of the two directions).
+// The hole region: the removed faces of the complete model (the truth) against the repaired
+// mesh, and the patch against the complete model (the larger of the two directions).
 struct HoleRegionDistance {
   DistanceSummary summary;
   bool converged = true;
+  Mesh truth;                              ///< the removed faces of the complete model
+  DirectedMeanDistance truth_to_repaired;  ///< for the Chamfer distances
+  std::optional<DirectedMeanDistance> patch_to_complete;
 };
 HoleRegionDistance hole_region_distance(const Case& c, const std::vector<int>& removed,
                                         const PatchMean& patch,
                                         const embree::TriangleScene& complete_scene,
                                         const embree::TriangleScene& repaired_scene,
                                         const SurfaceDistanceOptions& options) {
-  const Mesh truth = face_subset(c.complete, removed);
-  const auto truth_to_repaired_h = directed_hausdorff(truth, repaired_scene, options.hausdorff);
-  const auto truth_to_repaired_m = directed_mean_distance(truth, repaired_scene, options.mean);
   HoleRegionDistance hole;
-  hole.summary = distance_summary(truth_to_repaired_h, truth_to_repaired_m);
-  hole.converged = truth_to_repaired_h.converged && truth_to_repaired_m.converged;
+  hole.truth = face_subset(c.complete, removed);
+  const auto truth_to_repaired_h =
+      directed_hausdorff(hole.truth, repaired_scene, options.hausdorff);
+  hole.truth_to_repaired = directed_mean_distance(hole.truth, repaired_scene, options.mean);
+  hole.summary = distance_summary(truth_to_repaired_h, hole.truth_to_repaired);
+  hole.converged = truth_to_repaired_h.converged && hole.truth_to_repaired.converged;
   if (patch.patch) {
     const auto h = directed_hausdorff(*patch.patch, complete_scene, options.hausdorff);
     const DirectedMeanDistance& m = *patch.mean;
     hole.summary = max_of(hole.summary, distance_summary(h, m));
     hole.converged = hole.converged && h.converged && m.converged;
+    hole.patch_to_complete = m;
   }
   return hole;
+}
+
+// Chamfer-L1 (a length) and Chamfer-L2 (a squared length) with their intervals.
+void add_chamfer(Recorder& out, const IntervalNames& l1_names, const IntervalNames& l2_names,
+                 const ChamferDistance& chamfer, double diagonal) {
+  add_interval(out, l1_names, {chamfer.l1.lower, chamfer.l1.value, chamfer.l1.upper}, diagonal);
+  add_interval(out, l2_names, {chamfer.l2.lower, chamfer.l2.value, chamfer.l2.upper},
+               diagonal * diagonal);
 }
 
 // The slice paper's Table 2 error: the mean distance of the new vertices from the complete
@@ -189,10 +205,18 @@ void add_new_vertex_error(const Mesh& repaired, const embree::TriangleScene& com
     out.add(kNewVertexMeanErrorRelDiag, sum / count / diagonal);
 }
 
-void add_distances(const Case& c, const MethodResult& result, const EvaluationOptions& options,
-                   double diagonal, const embree::TriangleScene& complete_scene,
-                   const embree::TriangleScene& repaired_scene, const SharedFirstBounds& first,
-                   Recorder& out, PhaseLaps& laps) {
+// What the literature's sampled metrics take from the distances: the hole region's truth and
+// the patch (where the case has holes).
+struct RegionMeshes {
+  std::optional<Mesh> truth;
+  std::optional<Mesh> patch;
+};
+
+RegionMeshes add_distances(const Case& c, const MethodResult& result,
+                           const EvaluationOptions& options, double diagonal,
+                           const embree::TriangleScene& complete_scene,
+                           const embree::TriangleScene& repaired_scene,
+                           const SharedFirstBounds& first, Recorder& out, PhaseLaps& laps) {
   const Mesh& repaired = result.repaired;
   const SurfaceDistanceOptions whole = whole_model_distance_options(options, diagonal);
   const SurfaceDistanceOptions hole_options = hole_region_options(options, whole, diagonal);
@@ -202,7 +226,7 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   // of the repair against the complete model takes the steps it recorded for the cells they
   // share, the patch's (MeanSearchSteps: the same numbers, computed once).
   MeanSearchSteps patch_steps;
-  const PatchMean patch =
+  PatchMean patch =
       patch_mean(repaired, !removed.empty(), complete_scene, hole_options.mean, patch_steps);
   laps.lap(evaluation_phases::kPatchMean);
   FirstBounds repaired_to_complete = first.repaired_to_complete;
@@ -216,10 +240,12 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
   out.add(kHausdorffUpperRelDiag, model.hausdorff.upper / diagonal);
   add_interval(out, kMeanDistance, model.mean, diagonal);
   add_interval(out, kRmsDistance, model.rms, diagonal);
+  add_chamfer(out, kChamferL1, kChamferL2, chamfer_distance(d.a_to_b, d.b_to_a), diagonal);
 
+  RegionMeshes regions;
   bool converged = d.converged();
   if (!removed.empty()) {
-    const HoleRegionDistance hole =
+    HoleRegionDistance hole =
         hole_region_distance(c, removed, patch, complete_scene, repaired_scene, hole_options);
     converged = converged && hole.converged;
     out.add_flag(kHoleDistanceConvergedOk, hole.converged);
@@ -227,11 +253,56 @@ void add_distances(const Case& c, const MethodResult& result, const EvaluationOp
     out.add(kHoleHausdorffUpperRelDiag, hole.summary.hausdorff.upper / diagonal);
     add_interval(out, kHoleMeanDistance, hole.summary.mean, diagonal);
     add_interval(out, kHoleRmsDistance, hole.summary.rms, diagonal);
+    if (hole.patch_to_complete) {
+      add_chamfer(out, kHoleChamferL1, kHoleChamferL2,
+                  chamfer_distance(*hole.patch_to_complete, hole.truth_to_repaired), diagonal);
+    }
+    regions.truth = std::move(hole.truth);
+    regions.patch = std::move(patch.patch);
     laps.lap(evaluation_phases::kHoleRegionDistances);
   }
   out.add_flag(kDistanceConvergedOk, converged);
   add_new_vertex_error(repaired, complete_scene, diagonal, out);
   laps.lap(evaluation_phases::kNewVertexError);
+  return regions;
+}
+
+// F-score at the two thresholds and normal consistency of a repair R against a truth C:
+// precision and a(R, C) from R's samples against C, recall and a(C, R) from C's against R.
+void add_agreement(Recorder& out, const char* f_small, const char* f_large, const char* consistency,
+                   const SampledAgreement& precision, const SampledAgreement& recall) {
+  out.add(f_small, f_score(precision.within_fraction[0], recall.within_fraction[0]));
+  out.add(f_large, f_score(precision.within_fraction[1], recall.within_fraction[1]));
+  out.add(consistency, 0.5 * (precision.abs_cosine_mean + recall.abs_cosine_mean));
+}
+
+void add_literature_metrics(const Case& c, const MethodResult& result,
+                            const EvaluationOptions& options, double diagonal,
+                            const embree::TriangleScene& complete_scene,
+                            const embree::TriangleScene& repaired_scene,
+                            const RegionMeshes& regions, Recorder& out) {
+  SampledAgreementOptions sampling;
+  sampling.thresholds = {options.f_score_tau_small_rel_diag * diagonal,
+                         options.f_score_tau_large_rel_diag * diagonal};
+  sampling.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
+  sampling.samples = options.literature_samples;
+  // Faces the two models share exactly count exactly (distance 0, the same normal).
+  const SharedFaces shared = shared_faces(result.repaired, c.complete);
+  add_agreement(out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
+                sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a),
+                sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b));
+  if (regions.truth && regions.patch) {
+    sampling.samples = options.hole_literature_samples;
+    add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,
+                  kHoleNormalConsistencyFraction,
+                  sampled_agreement(*regions.patch, complete_scene, sampling),
+                  sampled_agreement(*regions.truth, repaired_scene, sampling));
+  }
+  EdgeChamferOptions edge_options;
+  edge_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
+  if (const auto edge =
+          edge_chamfer_distance(c.complete, removed_faces(c), result.repaired, edge_options))
+    out.add(kHoleEdgeChamferRelDiag, *edge / diagonal);
 }
 
 void add_feature_recovery(const Case& c, const MethodResult& result,
@@ -241,6 +312,7 @@ void add_feature_recovery(const Case& c, const MethodResult& result,
   feature_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
   feature_options.edge_tolerance = options.edge_tolerance_rel_diag * diagonal;
   feature_options.edge_search_radius = options.edge_search_radius_rel_diag * diagonal;
+  feature_options.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
   const FeatureRecovery f = feature_recovery(c, result.repaired, complete_scene, feature_options);
   if (!f.corner_errors.empty()) {
     double sum = 0.0, largest = 0.0;
@@ -274,6 +346,17 @@ void add_feature_recovery(const Case& c, const MethodResult& result,
   }
 }
 
+// A valid repair: every hole closed (by the method's reports and by the output having no
+// boundary), manifold, consistently oriented, no self-intersection with a new face, the input
+// away from the holes unchanged. Recorded only where self-intersections were tested.
+bool valid_repair(const MethodResult& result, const Validity& v) {
+  const bool holes_closed = std::all_of(result.holes.begin(), result.holes.end(),
+                                        [](const HoleReport& h) { return h.closed; });
+  return holes_closed && v.open_boundary_loops == 0 && v.non_manifold_vertices == 0 &&
+         v.orientation_conflicts == 0 && v.patch_self_intersections == 0 &&
+         v.original_faces_changed == 0;
+}
+
 void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                   double diagonal, const InputSelfIntersections* known_input, const KeptFaces* kept,
                   Recorder& out) {
@@ -295,6 +378,8 @@ void add_validity(const Case& c, const MethodResult& result, const EvaluationOpt
   out.add_count(kNewDegenerateFacesCount, v.new_degenerate_faces);
   out.add_count(kOriginalFacesChangedCount, v.original_faces_changed);
   out.add_flag(kOriginalFacesUnchangedOk, v.original_faces_changed == 0);
+  if (v.self_intersections_tested)
+    out.add_flag(kValidRepairOk, valid_repair(result, v));
 }
 
 void add_classification(const Case& c, const MethodResult& result, Recorder& out) {
@@ -311,6 +396,7 @@ void add_classification(const Case& c, const MethodResult& result, Recorder& out
             fraction(a.boundary_kind_correct, a.boundary_kind_compared));
   out.add(kClassificationDecisionCorrectFraction, fraction(a.decision_correct, a.compared));
   out.add(kClassificationAllCorrectFraction, fraction(a.all_correct, a.compared));
+  out.add(kDecisionHandledFraction, fraction(a.decision_handled, a.compared));
 }
 
 void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptions& options,
@@ -401,7 +487,13 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
   if (result.repaired.n_faces() > 0) {
     const embree::TriangleScene repaired_scene(result.repaired);
     laps.lap(evaluation_phases::kRepairedScene);
-    add_distances(c, result, options, diagonal, complete_scene, repaired_scene, first, out, laps);
+    const RegionMeshes regions = add_distances(c, result, options, diagonal, complete_scene,
+                                               repaired_scene, first, out, laps);
+    if (options.literature_metrics) {
+      add_literature_metrics(c, result, options, diagonal, complete_scene, repaired_scene, regions,
+                             out);
+      laps.lap(evaluation_phases::kLiteratureMetrics);
+    }
     add_feature_recovery(c, result, options, diagonal, complete_scene, out);
     laps.lap(evaluation_phases::kFeatureRecovery);
   }

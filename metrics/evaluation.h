@@ -46,6 +46,18 @@ struct EvaluationOptions {
   double edge_sample_spacing_rel_diag = 1e-3;
   double edge_tolerance_rel_diag = 5e-3;
   double edge_search_radius_rel_diag = 5e-2;
+  /// Normal deviation and normal consistency: the complete model's faces within the nearest
+  /// distance plus this (relative) form the normal cone a normal is compared with
+  /// (metrics/normal_cone.h).
+  double normal_cone_tolerance_rel_diag = 1e-3;
+  /// The literature's metrics (metrics/literature_metrics.h): F-score, normal consistency
+  /// and the edge Chamfer distance. Points sampled per surface (whole model, hole region),
+  /// and the F-score's two thresholds tau (relative; 0.5 % and 1 % of the diagonal).
+  bool literature_metrics = true;
+  std::size_t literature_samples = 10'000;
+  std::size_t hole_literature_samples = 10'000;
+  double f_score_tau_small_rel_diag = 0.005;
+  double f_score_tau_large_rel_diag = 0.01;
   /// Validity: a new face of at most this area (relative to diagonal^2) is degenerate.
   double degenerate_area_rel_diag2 = 1e-14;
   /// Validity: run CGAL's self-intersection test (the costliest validity check).
@@ -73,6 +85,8 @@ constexpr const char* kPatchMean = "patch_mean_distance";
 constexpr const char* kWholeModelDistances = "whole_model_distances";
 constexpr const char* kHoleRegionDistances = "hole_region_distances";
 constexpr const char* kNewVertexError = "new_vertex_error";
+/// The literature's sampled metrics (F-score, normal consistency, edge Chamfer distance).
+constexpr const char* kLiteratureMetrics = "literature_metrics";
 constexpr const char* kFeatureRecovery = "feature_recovery";
 constexpr const char* kValidity = "validity";
 constexpr const char* kClassification = "classification";

@@ -11,8 +11,6 @@
 namespace holebench {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 std::vector<Point> sample_polyline(const std::vector<Point>& polyline, double spacing) {
   std::vector<Point> samples;
   if (polyline.empty())
@@ -113,12 +111,9 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
     const double area = face_area(repaired, f);
     if (!(area > 0.0))
       continue;
-    const Point n = face_normal(repaired, f);
-    const auto closest = complete_scene.closest_point(face_centroid(repaired, f));
-    const auto& t = complete_scene.triangle_of_face(closest.face);
-    Point m = OpenMesh::cross(t[1] - t[0], t[2] - t[0]);
-    m /= m.norm();
-    const double angle = std::acos(std::clamp(OpenMesh::dot(n, m), -1.0, 1.0)) * 180.0 / kPi;
+    const double angle = normal_cone_angle(complete_scene, face_centroid(repaired, f),
+                                           face_normal(repaired, f), options.normal_cone)
+                             .smallest_deg;
     area_sum += area;
     weighted += area * angle;
     largest = std::max(largest, angle);

@@ -15,13 +15,17 @@
 //    `edge_search_radius`, the largest distance of a sample to its nearest such edge (a
 //    one-sided Hausdorff distance from the true polyline to the repaired sharp edges near
 //    it); other edges have none;
-//  - normal deviation: for each new face, the angle between its normal and the normal of
-//    the complete model's face closest to its centroid; area-weighted mean and maximum.
+//  - normal deviation: for each new face, the smallest angle between its normal and the
+//    normals of the complete model's normal cone at its centroid (the faces within the
+//    nearest distance plus `normal_cone.tolerance`, normal_cone.h); area-weighted mean and
+//    maximum. On a crease both sides are in the cone, so a face that follows either side
+//    deviates little; a face that folds across it deviates from both.
 #pragma once
 
 #include "core/case.h"
 #include "core/features.h"
 #include "core/mesh.h"
+#include "metrics/normal_cone.h"
 
 #include <optional>
 #include <vector>
@@ -37,6 +41,7 @@ struct FeatureRecoveryOptions {
   double edge_sample_spacing = 1e-3;  ///< model units (the evaluation scales by the diagonal)
   double edge_tolerance = 5e-3;       ///< model units: a sharp edge this close covers a sample
   double edge_search_radius = 5e-2;   ///< model units: sharp edges farther are not "near"
+  NormalConeOptions normal_cone;      ///< the normal deviation's cone (model units)
 };
 
 struct MissingEdgeRecovery {

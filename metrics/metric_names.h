@@ -25,6 +25,26 @@ inline constexpr char kHoleRmsDistanceRelDiag[] = "hole_rms_distance_rel_diag";
 inline constexpr char kHoleRmsDistanceLowerRelDiag[] = "hole_rms_distance_lower_rel_diag";
 inline constexpr char kHoleRmsDistanceUpperRelDiag[] = "hole_rms_distance_upper_rel_diag";
 inline constexpr char kDistanceConvergedOk[] = "distance_converged_ok";
+// The literature's metrics (metrics/literature_metrics.h), whole model, then hole region.
+inline constexpr char kChamferL1RelDiag[] = "chamfer_l1_rel_diag";
+inline constexpr char kChamferL1LowerRelDiag[] = "chamfer_l1_lower_rel_diag";
+inline constexpr char kChamferL1UpperRelDiag[] = "chamfer_l1_upper_rel_diag";
+inline constexpr char kChamferL2RelDiag2[] = "chamfer_l2_rel_diag2";  ///< squared lengths
+inline constexpr char kChamferL2LowerRelDiag2[] = "chamfer_l2_lower_rel_diag2";
+inline constexpr char kChamferL2UpperRelDiag2[] = "chamfer_l2_upper_rel_diag2";
+inline constexpr char kFScore0p5PctFraction[] = "f_score_0_5pct_fraction";  ///< tau 0.5 % diag
+inline constexpr char kFScore1PctFraction[] = "f_score_1pct_fraction";      ///< tau 1 % diag
+inline constexpr char kNormalConsistencyFraction[] = "normal_consistency_fraction";
+inline constexpr char kHoleChamferL1RelDiag[] = "hole_chamfer_l1_rel_diag";
+inline constexpr char kHoleChamferL1LowerRelDiag[] = "hole_chamfer_l1_lower_rel_diag";
+inline constexpr char kHoleChamferL1UpperRelDiag[] = "hole_chamfer_l1_upper_rel_diag";
+inline constexpr char kHoleChamferL2RelDiag2[] = "hole_chamfer_l2_rel_diag2";
+inline constexpr char kHoleChamferL2LowerRelDiag2[] = "hole_chamfer_l2_lower_rel_diag2";
+inline constexpr char kHoleChamferL2UpperRelDiag2[] = "hole_chamfer_l2_upper_rel_diag2";
+inline constexpr char kHoleFScore0p5PctFraction[] = "hole_f_score_0_5pct_fraction";
+inline constexpr char kHoleFScore1PctFraction[] = "hole_f_score_1pct_fraction";
+inline constexpr char kHoleNormalConsistencyFraction[] = "hole_normal_consistency_fraction";
+inline constexpr char kHoleEdgeChamferRelDiag[] = "hole_edge_chamfer_rel_diag";
 inline constexpr char kNewVertexMeanErrorRelDiag[] = "new_vertex_mean_error_rel_diag";
 inline constexpr char kMissingCornerErrorMeanRelDiag[] = "missing_corner_error_mean_rel_diag";
 inline constexpr char kMissingCornerErrorMaxRelDiag[] = "missing_corner_error_max_rel_diag";
@@ -45,6 +65,10 @@ inline constexpr char kInputFacesCount[] = "input_faces_count";
 inline constexpr char kNewDegenerateFacesCount[] = "new_degenerate_faces_count";
 inline constexpr char kOriginalFacesChangedCount[] = "original_faces_changed_count";
 inline constexpr char kOriginalFacesUnchangedOk[] = "original_faces_unchanged_ok";
+/// Every hole closed, the output closed, manifold and consistently oriented, no
+/// self-intersection that involves a new face, the input's faces away from the holes
+/// unchanged (docs/results.md, "Valid repair").
+inline constexpr char kValidRepairOk[] = "valid_repair_ok";
 inline constexpr char kClassificationKCorrectFraction[] = "classification_k_correct_fraction";
 inline constexpr char kClassificationOrientationCorrectFraction[] =
     "classification_orientation_correct_fraction";
@@ -55,6 +79,8 @@ inline constexpr char kClassificationBoundaryKindCorrectFraction[] =
 inline constexpr char kClassificationDecisionCorrectFraction[] =
     "classification_decision_correct_fraction";
 inline constexpr char kClassificationAllCorrectFraction[] = "classification_all_correct_fraction";
+/// Share of the classified holes handled as the truth's decision says (closed / guided).
+inline constexpr char kDecisionHandledFraction[] = "decision_handled_fraction";
 inline constexpr char kArrowsUndefinedCount[] = "arrows_undefined_count";
 inline constexpr char kArrowsCount[] = "arrows_count";
 inline constexpr char kArrowPositionOutsideOk[] = "arrow_position_outside_ok";
@@ -85,5 +111,13 @@ inline constexpr IntervalNames kHoleMeanDistance{
     kHoleMeanDistanceRelDiag, kHoleMeanDistanceLowerRelDiag, kHoleMeanDistanceUpperRelDiag};
 inline constexpr IntervalNames kHoleRmsDistance{
     kHoleRmsDistanceRelDiag, kHoleRmsDistanceLowerRelDiag, kHoleRmsDistanceUpperRelDiag};
+inline constexpr IntervalNames kChamferL1{kChamferL1RelDiag, kChamferL1LowerRelDiag,
+                                          kChamferL1UpperRelDiag};
+inline constexpr IntervalNames kChamferL2{kChamferL2RelDiag2, kChamferL2LowerRelDiag2,
+                                          kChamferL2UpperRelDiag2};
+inline constexpr IntervalNames kHoleChamferL1{kHoleChamferL1RelDiag, kHoleChamferL1LowerRelDiag,
+                                              kHoleChamferL1UpperRelDiag};
+inline constexpr IntervalNames kHoleChamferL2{kHoleChamferL2RelDiag2, kHoleChamferL2LowerRelDiag2,
+                                              kHoleChamferL2UpperRelDiag2};
 
 }  // namespace holebench::metric_names

@@ -31,6 +31,7 @@ const std::vector<HistoryMetric>& history_metrics() {
   static const std::vector<HistoryMetric> metrics{
       {"hole_hausdorff_rel_diag_median",
        "Median hole Hausdorff distance (hole_hausdorff_rel_diag, relative to the diagonal)"},
+      {"valid_share", "Valid share (valid_repair_ok; a guiding method's decision measure)"},
       {"success_share", "Success share (status ok, every hole closed)"},
       {"fallback_share", "Fallback share (holes a stand-in handled / all holes)"},
       {"method_seconds_median", "Median method time (s)"},

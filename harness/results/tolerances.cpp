@@ -17,7 +17,10 @@ bool higher_is_better_metric(const std::string& metric) {
   return ends_with(metric, "_correct_fraction") || ends_with(metric, "_ok") ||
          metric.rfind("is_", 0) == 0 ||
          (metric.rfind("missing_edge_", 0) == 0 && ends_with(metric, "_fraction")) ||
-         (metric.rfind("arrow_", 0) == 0 && ends_with(metric, "visible_fraction"));
+         (metric.rfind("arrow_", 0) == 0 && ends_with(metric, "visible_fraction")) ||
+         metric.find("f_score_") != std::string::npos ||
+         ends_with(metric, "normal_consistency_fraction") ||
+         metric == metric_names::kDecisionHandledFraction;
 }
 
 bool informational_metric(const std::string& metric) {

@@ -117,7 +117,8 @@ void check_intervals(const std::map<std::string, double>& metrics,
       report("interval", named(*family.lower_name, lower) + " > " +
                              named(*family.upper_name, upper) + " (lower <= upper)");
     }
-    if (ends_with(value_name, "_rel_diag")) {  // a length: the interval lies in [0, inf)
+    // A length or a squared length: the interval lies in [0, inf).
+    if (ends_with(value_name, "_rel_diag") || ends_with(value_name, "_rel_diag2")) {
       for (const auto& name :
            {family.lower_name, std::optional<std::string>(value_name), family.upper_name}) {
         const auto it = name ? metrics.find(*name) : metrics.end();
@@ -160,6 +161,61 @@ void check_distance_order(const std::map<std::string, double>& metrics,
     report("new_vertex_error", named(error->first, error->second) + " > " +
                                    named(hausdorff->first, hausdorff->second) +
                                    " (new vertices lie on the patch)");
+  }
+}
+
+// Chamfer-L1 is the average of the two directed mean distances, the mean distance their
+// larger; likewise Chamfer-L2 and the squared RMS distance (metrics/literature_metrics.h).
+void check_chamfer(const std::map<std::string, double>& metrics, const ValidationOptions& options,
+                   const Report& report) {
+  const double slack = options.cross_metric_relative_slack;
+  for (const std::string prefix : {"", "hole_"}) {
+    const auto l1 = metrics.find(prefix + metric_names::kChamferL1RelDiag);
+    const auto mean = metrics.find(prefix + metric_names::kMeanDistanceRelDiag);
+    if (l1 != metrics.end() && mean != metrics.end() && !at_most(l1->second, mean->second, slack)) {
+      report("chamfer", named(l1->first, l1->second) + " > " + named(mean->first, mean->second) +
+                            " (the average of two directed means is at most their larger)");
+    }
+    const auto l2 = metrics.find(prefix + metric_names::kChamferL2RelDiag2);
+    const auto rms = metrics.find(prefix + metric_names::kRmsDistanceRelDiag);
+    if (l2 != metrics.end() && rms != metrics.end() &&
+        !at_most(l2->second, rms->second * rms->second, slack)) {
+      report("chamfer", named(l2->first, l2->second) + " > " + rms->first +
+                            "^2 = " + number(rms->second * rms->second) +
+                            " (the average of two mean squares is at most their larger)");
+    }
+  }
+}
+
+// valid_repair_ok = 1 promises a closed, manifold, consistently oriented output without a
+// self-intersection that involves a new face, the input away from the holes unchanged and
+// every hole closed (docs/results.md, "Valid repair").
+void check_valid_repair(const JobRecord& record, const std::map<std::string, double>& metrics,
+                        const Report& report) {
+  const auto valid = metrics.find(metric_names::kValidRepairOk);
+  if (valid == metrics.end() || valid->second != 1.0)
+    return;
+  for (const char* flag :
+       {metric_names::kIsClosed, metric_names::kIsManifold, metric_names::kIsConsistentlyOriented,
+        metric_names::kOriginalFacesUnchangedOk}) {
+    const auto it = metrics.find(flag);
+    if (it == metrics.end() || it->second != 1.0) {
+      report("valid_repair",
+             std::string("valid_repair_ok = 1 but ") + flag +
+                 (it == metrics.end() ? " is missing" : " = " + number(it->second)));
+    }
+  }
+  const auto crossings = metrics.find(metric_names::kPatchSelfIntersectionsCount);
+  if (crossings == metrics.end() || crossings->second != 0.0) {
+    report("valid_repair",
+           std::string("valid_repair_ok = 1 but ") + metric_names::kPatchSelfIntersectionsCount +
+               (crossings == metrics.end() ? " is missing" : " = " + number(crossings->second)));
+  }
+  for (const auto& hole : record.holes) {
+    if (!hole.closed) {
+      report("valid_repair",
+             fmt::format("valid_repair_ok = 1 but hole {} is open", hole.hole_index));
+    }
   }
 }
 
@@ -260,6 +316,8 @@ void check_record(const JobRecord& record, const ValidationOptions& options,
   check_ranges(metrics, report);
   check_intervals(metrics, unusable, report);
   check_distance_order(metrics, options, report);
+  check_chamfer(metrics, options, report);
+  check_valid_repair(record, metrics, report);
   if (record.status == JobStatus::Ok) {
     for (const auto& hole : record.holes) {
       if (!hole.closed && !hole.arrow) {

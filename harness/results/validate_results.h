@@ -34,7 +34,7 @@ struct Violation {
   std::string job_id;  ///< as written (else "record N", 0-based); empty: the file's context
   /// The check, a stable name: schema_version, required_field, status, duplicate_job_id,
   /// field_type, job_id_mismatch, metrics_missing, finite, fraction_range, flag_value, count_value,
-  /// interval, distance_order, new_vertex_error, open_hole.
+  /// interval, distance_order, new_vertex_error, chamfer, valid_repair, open_hole.
   std::string check;
   std::string message;  ///< what is wrong, with the values (written to read back exactly)
 };

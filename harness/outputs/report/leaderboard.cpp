@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <set>
 #include <tuple>
 #include <utility>
 
@@ -15,10 +16,15 @@ namespace holebench::harness::report {
 
 const std::vector<LeaderboardColumn>& leaderboard_columns() {
   static const std::vector<LeaderboardColumn> columns{
+      {"valid_share", "valid", true},
+      {"closed_invalid_share", "closed but invalid", false},
       {"success_share", "success", true},
       {"fallback_share", "fallback", false},
       {"defect_share", "self-checked defect", false},
       {"hole_hausdorff_rel_diag_median", "hole Hausdorff (median)", false},
+      {"hole_chamfer_l1_rel_diag_median", "hole Chamfer-L1 (median)", false},
+      {"hole_f_score_1pct_fraction_mean", "hole F-score 1% (mean)", true},
+      {"hole_normal_consistency_fraction_mean", "hole normal consistency (mean)", true},
       {"new_vertex_mean_error_rel_diag_median", "new-vertex error (median)", false},
       {"missing_edge_covered_fraction_mean", "missing-edge coverage (mean)", true},
       {"method_seconds_median", "method time s (median)", false},
@@ -39,6 +45,34 @@ bool succeeded(const JobRecord& record) {
   return record.status == JobStatus::Ok &&
          std::all_of(record.holes.begin(), record.holes.end(),
                      [](const HoleRecord& hole) { return hole.closed; });
+}
+
+bool valid(const JobRecord& record) {
+  const double* flag = record.metric(metric_names::kValidRepairOk);
+  return flag && *flag == 1.0;
+}
+
+// The decision measure of a job: its decision_handled_fraction; a job whose method did not
+// return a result handled no hole (0); a returned job without the metric (no truth to compare
+// with) is left out.
+std::optional<double> decision_handled(const JobRecord& record) {
+  if (const double* v = record.metric(metric_names::kDecisionHandledFraction))
+    return *v;
+  if (record.status == JobStatus::Ok || record.status == JobStatus::Partial)
+    return std::nullopt;
+  return 0.0;
+}
+
+std::optional<double> mean_decision_handled(const Records& records) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const JobRecord* r : records) {
+    if (const auto v = decision_handled(*r)) {
+      sum += *v;
+      ++count;
+    }
+  }
+  return count == 0 ? std::nullopt : std::optional<double>(sum / static_cast<double>(count));
 }
 
 std::optional<double> share(std::size_t part, std::size_t whole) {
@@ -67,13 +101,31 @@ std::optional<double> mean_of_metric(const Records& records, const std::string& 
   return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
 }
 
-LeaderboardEntry make_entry(const std::string& method, const Records& records) {
+// Whether the records carry valid_repair_ok: not those written before it existed (a returned
+// job with metrics but without the flag), where the valid share would read as 0.
+bool validity_known(const Records& records) {
+  const auto flagged = [](const JobRecord* r) {
+    return r->metric(metric_names::kValidRepairOk) != nullptr;
+  };
+  const auto unflagged_result = [&](const JobRecord* r) {
+    return (r->status == JobStatus::Ok || r->status == JobStatus::Partial) && !r->metrics.empty() &&
+           !flagged(r);
+  };
+  return std::any_of(records.begin(), records.end(), flagged) ||
+         std::none_of(records.begin(), records.end(), unflagged_result);
+}
+
+LeaderboardEntry make_entry(const std::string& method, const Records& records,
+                            bool guides_by_design) {
   LeaderboardEntry entry;
   entry.method = method;
   entry.jobs = records.size();
+  entry.judged_by_decision = guides_by_design;
   std::vector<double> times;
   for (const JobRecord* r : records) {
     entry.successes += succeeded(*r) ? 1 : 0;
+    entry.valid_jobs += valid(*r) ? 1 : 0;
+    entry.closed_invalid_jobs += succeeded(*r) && !valid(*r) ? 1 : 0;
     entry.holes += r->holes.size();
     for (const auto& hole : r->holes)
       entry.fallback_holes += hole.fallback.empty() ? 0 : 1;
@@ -82,11 +134,19 @@ LeaderboardEntry make_entry(const std::string& method, const Records& records) {
     if (method_returned(r->status))
       times.push_back(r->method_seconds);
   }
+  const bool known = validity_known(records);
   entry.values = {
+      guides_by_design ? mean_decision_handled(records)
+      : known          ? share(entry.valid_jobs, entry.jobs)
+                       : std::nullopt,
+      known ? share(entry.closed_invalid_jobs, entry.jobs) : std::nullopt,
       share(entry.successes, entry.jobs),
       share(entry.fallback_holes, entry.holes),
       share(entry.defect_holes, entry.holes),
       median_of_metric(records, metric_names::kHoleHausdorffRelDiag),
+      median_of_metric(records, metric_names::kHoleChamferL1RelDiag),
+      mean_of_metric(records, metric_names::kHoleFScore1PctFraction),
+      mean_of_metric(records, metric_names::kHoleNormalConsistencyFraction),
       median_of_metric(records, metric_names::kNewVertexMeanErrorRelDiag),
       mean_of_metric(records, metric_names::kMissingEdgeCoveredFraction),
       times.empty() ? std::nullopt : std::optional<double>(median_of(times)),
@@ -103,9 +163,13 @@ void mark_best(std::vector<LeaderboardEntry>& entries) {
   for (std::size_t c = 0; c < columns.size(); ++c) {
     std::optional<double> best;
     std::size_t with_value = 0;
+    // The decision measure is not a valid share: it is not ranked against one.
+    const auto comparable = [&](const LeaderboardEntry& entry) {
+      return entry.values[c] && !(c == 0 && entry.judged_by_decision);
+    };
     for (const auto& entry : entries) {
       const auto& v = entry.values[c];
-      if (!v)
+      if (!comparable(entry))
         continue;
       ++with_value;
       if (!best || (columns[c].higher_is_better ? *v > *best : *v < *best))
@@ -115,7 +179,7 @@ void mark_best(std::vector<LeaderboardEntry>& entries) {
       continue;
     // Equal as shown (3 significant digits) is equal: the reader sees no difference.
     for (auto& entry : entries)
-      entry.best[c] = entry.values[c] && short_number(*entry.values[c]) == short_number(*best);
+      entry.best[c] = comparable(entry) && short_number(*entry.values[c]) == short_number(*best);
   }
 }
 
@@ -188,21 +252,23 @@ std::map<std::string, Records> by_method_of(const Records& records) {
 }
 
 /// One entry per method, best values marked.
-std::vector<LeaderboardEntry> entries_of(const std::map<std::string, Records>& by_method) {
+std::vector<LeaderboardEntry> entries_of(const std::map<std::string, Records>& by_method,
+                                         const std::set<std::string>& guiding) {
   std::vector<LeaderboardEntry> entries;
   for (const auto& [method, records] : by_method)
-    entries.push_back(make_entry(method, records));
+    entries.push_back(make_entry(method, records, guiding.count(method) > 0));
   mark_best(entries);
   return entries;
 }
 
 LeaderboardGroup make_group(const std::string& family, const std::string& kind,
-                            const Records& records, const LeaderboardOptions& options) {
+                            const Records& records, const std::set<std::string>& guiding,
+                            const LeaderboardOptions& options) {
   LeaderboardGroup group;
   group.family = family;
   group.kind = kind;
   const auto by_method = by_method_of(records);
-  group.entries = entries_of(by_method);
+  group.entries = entries_of(by_method, guiding);
   group.pairs = make_pairs(by_method, options);
   return group;
 }
@@ -217,9 +283,25 @@ std::string kind_label(const LeaderboardGroup& group) {
 
 }  // namespace
 
+std::set<std::string> methods_that_guide(const ResultsData& data) {
+  std::set<std::string> guiding;
+  for (const auto& record : data.records) {
+    if (std::any_of(record.holes.begin(), record.holes.end(),
+                    [](const HoleRecord& hole) { return hole.arrow && !hole.closed; }))
+      guiding.insert(record.job.method_id);
+  }
+  return guiding;
+}
+
+std::string leaderboard_entry_cell(const LeaderboardEntry& entry, std::size_t column) {
+  const std::string text = leaderboard_cell(entry.values[column]);
+  return column == 0 && entry.judged_by_decision && text != "-" ? text + " (decision)" : text;
+}
+
 Leaderboard compute_leaderboard(const ResultsData& data, const LeaderboardOptions& options) {
   Leaderboard board;
   board.options = options;
+  const std::set<std::string> guiding = methods_that_guide(data);
   std::map<std::string, std::map<std::string, Records>> families;
   for (const auto& record : data.records)
     families[record.case_family][record.case_kind].push_back(&record);
@@ -227,9 +309,9 @@ Leaderboard compute_leaderboard(const ResultsData& data, const LeaderboardOption
     Records all;
     for (const auto& [kind, records] : kinds)
       all.insert(all.end(), records.begin(), records.end());
-    board.groups.push_back(make_group(family, "", all, options));
+    board.groups.push_back(make_group(family, "", all, guiding, options));
     for (const auto& [kind, records] : kinds)
-      board.groups.push_back(make_group(family, kind, records, options));
+      board.groups.push_back(make_group(family, kind, records, guiding, options));
   }
   return board;
 }
@@ -238,7 +320,7 @@ std::vector<LeaderboardEntry> method_totals(const ResultsData& data) {
   Records all;
   for (const auto& record : data.records)
     all.push_back(&record);
-  return entries_of(by_method_of(all));
+  return entries_of(by_method_of(all), methods_that_guide(data));
 }
 
 std::string leaderboard_cell(const std::optional<double>& value) {
@@ -268,7 +350,7 @@ std::string leaderboard_markdown(const Leaderboard& board) {
       out += fmt::format("| {} | {} | {} |", markdown_cell(kind_label(group)),
                          markdown_cell(entry.method), entry.jobs);
       for (std::size_t c = 0; c < columns.size(); ++c)
-        out += " " + bold_if(entry.best[c], leaderboard_cell(entry.values[c]), "**", "**") + " |";
+        out += " " + bold_if(entry.best[c], leaderboard_entry_cell(entry, c), "**", "**") + " |";
       out += "\n";
     }
   }
@@ -288,7 +370,17 @@ std::string leaderboard_markdown(const Leaderboard& board) {
     }
   }
   out += fmt::format(
-      "\n`success`: share of jobs with status ok and every hole closed. `fallback`: share of the "
+      "\n`valid`: share of jobs whose output is a valid repair (`valid_repair_ok`: every hole "
+      "closed, the output closed, manifold and consistently oriented, no self-intersection "
+      "with a new face, the input away from the holes unchanged); a failed job is not valid. "
+      "For a method that guides holes by design (an open hole with a guidance arrow in its "
+      "jobs) the cell is instead the decision measure, marked `(decision)`: the mean share of "
+      "holes handled as the truth's decision says (closed where it says close, guided where it "
+      "says guide; `decision_handled_fraction`, a failed job 0), not ranked against valid "
+      "shares. `closed but invalid`: share of jobs with status ok and every hole closed that "
+      "are not valid. `hole Chamfer-L1`, `hole F-score 1%`, `hole normal consistency`: the "
+      "literature's metrics over the hole region (docs/metrics.md). "
+      "`success`: share of jobs with status ok and every hole closed. `fallback`: share of the "
       "hole records (jobs of every status) a stand-in handled instead of the method's own path. "
       "`self-checked defect`: share of the hole records whose method's check of its own patch "
       "found a defect (a patch that intersects itself or the mesh around the hole); methods "
@@ -329,7 +421,9 @@ std::string leaderboard_latex(const Leaderboard& board) {
     const auto& group = board.groups[i];
     if (group.is_family()) {
       out += latex_table_begin(
-          fmt::format("Leaderboard of the {} cases; bold: the best of a target kind",
+          fmt::format("Leaderboard of the {} cases; bold: the best of a target kind; $^{{d}}$: "
+                      "the decision measure of a method that guides by design, in place of "
+                      "its valid share",
                       latex_escape(group.family)),
           "leaderboard-" + latex_label(group.family), spec, header);
     } else {
@@ -340,7 +434,8 @@ std::string leaderboard_latex(const Leaderboard& board) {
       out += fmt::format("    {} & {} & {}", e == 0 ? latex_escape(kind_label(group)) : "",
                          latex_escape(entry.method), entry.jobs);
       for (std::size_t c = 0; c < columns.size(); ++c)
-        out += " & " + bold_if(entry.best[c], latex_cell(entry.values[c]), "\\textbf{", "}");
+        out += " & " + bold_if(entry.best[c], latex_cell(entry.values[c]), "\\textbf{", "}") +
+               (c == 0 && entry.judged_by_decision && entry.values[c] ? "$^{d}$" : "");
       out += " \\\\\n";
     }
     if (i + 1 == board.groups.size() || board.groups[i + 1].is_family())

@@ -1,7 +1,9 @@
 // The leaderboard of a results file, as data: per case family, and per target kind within it,
-// each method's success share, fallback share, median hole Hausdorff distance, median
-// new-vertex error, mean missing-edge coverage and median method time, with the best value of
-// each column marked; then, per family and kind, every pair of methods compared on the jobs
+// each method's valid share (or, for a method that guides by design, its decision measure),
+// closed-but-invalid share, success share, fallback and defect shares, median hole Hausdorff
+// distance and Chamfer-L1, mean hole F-score and normal consistency, median new-vertex error,
+// mean missing-edge coverage and median method time, with the best value of each column
+// marked; then, per family and kind, every pair of methods compared on the jobs
 // both ran (win/tie/loss counts within the metric's error bound and a Wilcoxon signed-rank
 // p-value, core/statistics.h). Formatted as Markdown and LaTeX here, as HTML by report.cpp.
 // The definitions are in docs/reports.md.
@@ -13,6 +15,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,15 +39,22 @@ struct LeaderboardColumn {
   bool higher_is_better = false;
 };
 
-/// The columns in order: success share, fallback share, median hole Hausdorff distance,
-/// median new-vertex error, mean missing-edge coverage, median method time.
+/// The columns in order: valid share (the decision measure for a method that guides by design),
+/// closed-but-invalid share, success share, fallback share, self-checked defect share, median
+/// hole Hausdorff distance, median hole Chamfer-L1, mean hole F-score at 1 %, mean hole normal
+/// consistency, median new-vertex error, mean missing-edge coverage, median method time.
 const std::vector<LeaderboardColumn>& leaderboard_columns();
 
 /// One method in one group (a family, or a target kind of a family).
 struct LeaderboardEntry {
   std::string method;
   std::size_t jobs = 0;
-  std::size_t successes = 0;       ///< status ok and every hole closed
+  std::size_t successes = 0;            ///< status ok and every hole closed
+  std::size_t valid_jobs = 0;           ///< valid_repair_ok = 1
+  std::size_t closed_invalid_jobs = 0;  ///< successes that are not valid
+  /// The method guides holes by design (methods_that_guide): the first column holds its
+  /// decision measure (mean decision_handled_fraction) instead of the valid share, unranked.
+  bool judged_by_decision = false;
   std::size_t holes = 0;           ///< hole records of the jobs (every status)
   std::size_t fallback_holes = 0;  ///< of those, with a non-empty `fallback`
   /// Of those, with a defect the method found in its own result (HoleReport::defect, e.g. a
@@ -94,6 +104,13 @@ std::vector<LeaderboardEntry> method_totals(const ResultsData& data);
 
 /// A column's value as the tables show it (3 significant digits; "-" when absent).
 std::string leaderboard_cell(const std::optional<double>& value);
+
+/// An entry's cell: leaderboard_cell, with " (decision)" after a decision measure.
+std::string leaderboard_entry_cell(const LeaderboardEntry& entry, std::size_t column);
+
+/// The methods that guide holes by design: some job of theirs has a hole left open with a
+/// guidance arrow.
+std::set<std::string> methods_that_guide(const ResultsData& data);
 
 /// A pair's p-value as the tables show it ("-" without pairs).
 std::string leaderboard_p_value(const LeaderboardPair& pair);

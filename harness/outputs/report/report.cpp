@@ -221,7 +221,7 @@ std::string leaderboard_html(const Leaderboard& board) {
                       html_escape(entry.method), entry.jobs);
       for (std::size_t c = 0; c < columns.size(); ++c) {
         out += fmt::format("<td{}>{}</td>", entry.best[c] ? " class=\"best\"" : "",
-                           leaderboard_cell(entry.values[c]));
+                           html_escape(leaderboard_entry_cell(entry, c)));
       }
       out += "</tr>\n";
     }

@@ -1,0 +1,205 @@
+#include "metrics/literature_metrics.h"
+
+#include "core/distances.h"
+#include "core/geometry.h"
+#include "metrics/embree/triangle_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace holebench {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The R2 sequence (Roberts' generalised golden ratio): a fixed low-discrepancy point in the
+// unit square for each index, the same on every machine.
+std::pair<double, double> r2_point(std::size_t i) {
+  constexpr double g = 1.32471795724474602596;  // the plastic number
+  constexpr double a1 = 1.0 / g, a2 = 1.0 / (g * g);
+  const double n = static_cast<double>(i + 1);
+  return {std::fmod(0.5 + a1 * n, 1.0), std::fmod(0.5 + a2 * n, 1.0)};
+}
+
+// A point of triangle (a, b, c) from a point (u, v) of the unit square, uniform by area.
+Point in_triangle(const Point& a, const Point& b, const Point& c, double u, double v) {
+  if (u + v > 1.0) {
+    u = 1.0 - u;
+    v = 1.0 - v;
+  }
+  return a + (b - a) * u + (c - a) * v;
+}
+
+struct EdgeSegment {
+  Point a, b;
+};
+
+// The sharp edges (|dihedral| >= the threshold) of `mesh` that bound a face `wanted` says yes
+// to; boundary edges have no dihedral angle and are not sharp.
+template <typename Wanted>
+std::vector<EdgeSegment> sharp_edges_around(const Mesh& mesh, double sharp_angle_degrees,
+                                            Wanted wanted) {
+  const double threshold = sharp_angle_degrees * kPi / 180.0;
+  std::vector<EdgeSegment> edges;
+  for (auto e : mesh.edges()) {
+    if (mesh.is_boundary(e))
+      continue;
+    const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
+    const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
+    if (!wanted(f0) && !wanted(f1))
+      continue;
+    if (std::abs(signed_dihedral_angle(mesh, e)) >= threshold)
+      edges.push_back({mesh.point(mesh.from_vertex_handle(mesh.halfedge_handle(e, 0))),
+                       mesh.point(mesh.to_vertex_handle(mesh.halfedge_handle(e, 0)))});
+  }
+  return edges;
+}
+
+// A point on a polyline standing for `length` of it (the midpoint rule).
+struct EdgeSample {
+  Point point;
+  double length = 0.0;
+};
+
+std::vector<EdgeSample> sample_segments(const std::vector<EdgeSegment>& segments, double spacing) {
+  std::vector<EdgeSample> samples;
+  for (const auto& s : segments) {
+    const double length = (s.b - s.a).norm();
+    const int steps = std::max(1, static_cast<int>(std::ceil(length / spacing)));
+    for (int i = 0; i < steps; ++i)
+      samples.push_back({s.a + (s.b - s.a) * ((i + 0.5) / steps), length / steps});
+  }
+  return samples;
+}
+
+// The length-weighted mean distance of the samples to the nearest segment.
+double mean_distance_to_segments(const std::vector<EdgeSample>& samples,
+                                 const std::vector<EdgeSegment>& segments) {
+  double sum = 0.0, length = 0.0;
+  for (const auto& sample : samples) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& s : segments)
+      best = std::min(best, point_segment_distance(sample.point, s.a, s.b));
+    sum += best * sample.length;
+    length += sample.length;
+  }
+  return length > 0.0 ? sum / length : 0.0;
+}
+
+}  // namespace
+
+ChamferDistance chamfer_distance(const DirectedMeanDistance& a_to_b,
+                                 const DirectedMeanDistance& b_to_a) {
+  ChamferDistance c;
+  c.l1 = {0.5 * (a_to_b.mean_lower + b_to_a.mean_lower), 0.5 * (a_to_b.mean + b_to_a.mean),
+          0.5 * (a_to_b.mean_upper + b_to_a.mean_upper)};
+  const auto square = [](double x) { return x * x; };
+  c.l2 = {0.5 * (square(a_to_b.rms_lower) + square(b_to_a.rms_lower)),
+          0.5 * (square(a_to_b.rms) + square(b_to_a.rms)),
+          0.5 * (square(a_to_b.rms_upper) + square(b_to_a.rms_upper))};
+  return c;
+}
+
+AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
+  AreaSamples samples;
+  std::vector<int> faces;
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (auto f : a.faces()) {
+    if (skip && (*skip)[f.idx()])
+      continue;
+    const double area = face_area(a, f);
+    if (!(area > 0.0))
+      continue;
+    total += area;
+    faces.push_back(f.idx());
+    cumulative.push_back(total);
+  }
+  if (faces.empty() || count == 0)
+    return samples;
+  samples.points.reserve(count);
+  // Systematic sampling: point k at cumulative area (k + 1/2) / count of the total.
+  std::size_t face = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double at = (static_cast<double>(k) + 0.5) / static_cast<double>(count) * total;
+    while (face + 1 < faces.size() && cumulative[face] < at)
+      ++face;
+    const auto corners = face_corners(a, a.face_handle(faces[face]));
+    const auto [u, v] = r2_point(k);
+    samples.points.push_back(in_triangle(corners[0], corners[1], corners[2], u, v));
+    samples.faces.push_back(faces[face]);
+    samples.normals.push_back(triangle_unit_normal(corners[0], corners[1], corners[2]));
+  }
+  return samples;
+}
+
+SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
+                                   const SampledAgreementOptions& options,
+                                   const std::vector<int>* b_face_of_a) {
+  SampledAgreement agreement;
+  agreement.within_fraction.assign(options.thresholds.size(), 0.0);
+  std::vector<bool> shared(a.n_faces(), false);
+  double shared_area = 0.0;
+  for (auto f : a.faces()) {
+    const double area = face_area(a, f);
+    if (!(area > 0.0))
+      continue;
+    agreement.area += area;
+    if (b_face_of_a && (*b_face_of_a)[f.idx()] >= 0) {
+      shared[f.idx()] = true;
+      shared_area += area;
+    }
+  }
+  if (!(agreement.area > 0.0))
+    return agreement;
+  agreement.sampled_area = agreement.area - shared_area;
+  const double shared_share = shared_area / agreement.area;
+  const double sampled_share = 1.0 - shared_share;
+  const AreaSamples samples =
+      agreement.sampled_area > 0.0 ? area_samples(a, options.samples, &shared) : AreaSamples{};
+  agreement.samples = samples.points.size();
+  std::vector<std::size_t> within(options.thresholds.size(), 0);
+  double cosine_sum = 0.0;
+  for (std::size_t i = 0; i < samples.points.size(); ++i) {
+    const NormalConeAngle cone =
+        normal_cone_angle(b_scene, samples.points[i], samples.normals[i], options.normal_cone);
+    cosine_sum += cone.largest_abs_cosine;
+    for (std::size_t t = 0; t < options.thresholds.size(); ++t)
+      within[t] += cone.nearest_distance <= options.thresholds[t] ? 1 : 0;
+  }
+  const double n = static_cast<double>(samples.points.size());
+  for (std::size_t t = 0; t < options.thresholds.size(); ++t)
+    agreement.within_fraction[t] = shared_share + (n > 0.0 ? sampled_share * within[t] / n : 0.0);
+  agreement.abs_cosine_mean = shared_share + (n > 0.0 ? sampled_share * cosine_sum / n : 0.0);
+  agreement.fraction_error = n > 0.0 ? sampled_share * 1.29 / std::sqrt(n) : 0.0;
+  return agreement;
+}
+
+double f_score(double precision, double recall) {
+  return precision + recall > 0.0 ? 2.0 * precision * recall / (precision + recall) : 0.0;
+}
+
+std::optional<double> edge_chamfer_distance(const Mesh& complete,
+                                            const std::vector<int>& removed_faces,
+                                            const Mesh& repaired,
+                                            const EdgeChamferOptions& options) {
+  std::vector<bool> removed(complete.n_faces(), false);
+  for (int f : removed_faces)
+    removed[f] = true;
+  const auto truth = sharp_edges_around(complete, options.sharp_angle_degrees,
+                                        [&](auto f) { return f.is_valid() && removed[f.idx()]; });
+  const auto repair = sharp_edges_around(repaired, options.sharp_angle_degrees, [&](auto f) {
+    return f.is_valid() && is_new(repaired, f);
+  });
+  if (truth.empty() || repair.empty())
+    return std::nullopt;
+  const auto truth_points = sample_segments(truth, options.edge_sample_spacing);
+  const auto repair_points = sample_segments(repair, options.edge_sample_spacing);
+  return 0.5 * (mean_distance_to_segments(repair_points, truth) +
+                mean_distance_to_segments(truth_points, repair));
+}
+
+}  // namespace holebench
