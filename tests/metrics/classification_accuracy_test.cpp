@@ -71,5 +71,32 @@ TEST(ClassificationAccuracy, WrongFieldsAreCountedWrong) {
   EXPECT_EQ(a.all_correct, 0u);
 }
 
+// The decision measure: a hole the truth says to close counts when closed; one it says to
+// guide counts when guided by an arrow and left open (closing it instead does not count).
+TEST(ClassificationAccuracy, DecisionHandledFollowsTheTruthsDecision) {
+  const Case close = generators::make_case("brep/k3/inner/convex-convex-reflex/small");
+  const Case guide =
+      generators::make_case("brep/k3/outer/convex-convex-reflex/inner-outer-outer/large");
+  ASSERT_EQ(close.holes[0].labels->expected_decision, Decision::CloseAutomatically);
+  ASSERT_EQ(guide.holes[0].labels->expected_decision, Decision::Guide);
+  const auto handled = [](const Case& c, bool closed, bool arrow) {
+    MethodResult result;
+    HoleReport report = report_at_hole(c, 0);
+    report.classification = *c.holes[0].labels;
+    report.closed = closed;
+    if (arrow)
+      report.arrow = GuidanceArrow{Point(0, 0, 0), Point(0, 0, 1)};
+    result.holes.push_back(report);
+    const auto a = classification_accuracy(c, result);
+    EXPECT_EQ(a.compared, 1u);
+    return a.decision_handled;
+  };
+  EXPECT_EQ(handled(close, true, false), 1u);
+  EXPECT_EQ(handled(close, false, true), 0u);
+  EXPECT_EQ(handled(guide, false, true), 1u);
+  EXPECT_EQ(handled(guide, true, false), 0u);
+  EXPECT_EQ(handled(guide, false, false), 0u);  // neither closed nor guided
+}
+
 }  // namespace
 }  // namespace holebench

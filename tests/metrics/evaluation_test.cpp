@@ -26,7 +26,7 @@ TEST(Evaluation, NamesCarryTheirUnit) {
   const Case c = generators::make_case("box/corner");
   MethodResult result;
   result.repaired = c.input;
-  const std::regex unit(R"(.*(_rel_diag|_deg|_count|_fraction|_s|_ok)$|^is_.*)");
+  const std::regex unit(R"(.*(_rel_diag|_rel_diag2|_deg|_count|_fraction|_s|_ok)$|^is_.*)");
   for (const auto& v : evaluate(c, result).values)
     EXPECT_TRUE(std::regex_match(v.name, unit)) << v.name;
 }
@@ -50,6 +50,19 @@ TEST(Evaluation, CompleteModelScoresZero) {
   EXPECT_EQ(e.find("is_manifold")->value, 1.0);
   EXPECT_EQ(e.find("self_intersections_count")->value, 0.0);
   EXPECT_EQ(e.find("distance_converged_ok")->value, 1.0);
+  EXPECT_EQ(e.find("valid_repair_ok")->value, 1.0);
+  // The literature's metrics of an exact repair: no distance, full agreement.
+  for (const char* name : {"chamfer_l1_upper_rel_diag", "chamfer_l2_upper_rel_diag2",
+                           "hole_chamfer_l1_upper_rel_diag", "hole_edge_chamfer_rel_diag"}) {
+    ASSERT_TRUE(has(e, name)) << name;
+    EXPECT_LE(e.find(name)->value, 1e-12) << name;
+  }
+  for (const char* name : {"f_score_0_5pct_fraction", "f_score_1pct_fraction",
+                           "normal_consistency_fraction", "hole_f_score_0_5pct_fraction",
+                           "hole_f_score_1pct_fraction", "hole_normal_consistency_fraction"}) {
+    ASSERT_TRUE(has(e, name)) << name;
+    EXPECT_NEAR(e.find(name)->value, 1.0, 1e-12) << name;
+  }
   EXPECT_FALSE(has(e, "classification_k_correct_fraction"));
   EXPECT_FALSE(has(e, "arrow_visible_fraction"));
 }
@@ -67,6 +80,38 @@ TEST(Evaluation, UnrepairedInputIsOpenAndFar) {
   EXPECT_FALSE(has(e, "new_vertex_mean_error_rel_diag"));
   EXPECT_FALSE(has(e, "patch_normal_deviation_mean_deg"));
   EXPECT_EQ(e.find("original_faces_unchanged_ok")->value, 1.0);
+  EXPECT_EQ(e.find("valid_repair_ok")->value, 0.0);  // open
+}
+
+// A patch that crosses the model is not a valid repair, though every hole is closed: the
+// removed faces play the patch, one of their vertices pushed through the opposite side.
+TEST(Evaluation, ASelfIntersectingPatchIsNotAValidRepair) {
+  const Case c = generators::make_case("box/corner");
+  MethodResult result;
+  result.repaired = c.complete;
+  for (int f : c.holes[0].removed_faces)
+    result.repaired.data(result.repaired.face_handle(f)).provenance = Provenance::New;
+  HoleReport report;
+  report.closed = true;
+  result.holes.push_back(report);
+  // A vertex that only new faces use, moved through the box to beyond its far side.
+  const Point centre = bounding_box(c.complete).center();
+  bool moved = false;
+  for (auto v : result.repaired.vertices()) {
+    bool only_new = !result.repaired.is_isolated(v);
+    for (auto f : result.repaired.vf_range(v))
+      only_new = only_new && is_new(result.repaired, f);
+    if (only_new && !moved) {
+      const Point p = result.repaired.point(v);
+      result.repaired.set_point(v, centre + (centre - p) * 1.5);
+      moved = true;
+    }
+  }
+  ASSERT_TRUE(moved);
+  const Evaluation e = evaluate(c, result);
+  EXPECT_EQ(e.find("is_closed")->value, 1.0);
+  EXPECT_GT(e.find("patch_self_intersections_count")->value, 0.0);
+  EXPECT_EQ(e.find("valid_repair_ok")->value, 0.0);
 }
 
 // The slice paper's Table 2 error on a known answer: the complete model with the vertices
@@ -182,8 +227,8 @@ TEST(Evaluation, EachStepThatRunsIsTimedOnce) {
   EXPECT_EQ(phase_names(evaluate(c, result)),
             (std::vector<std::string>{"complete_scene", "repaired_scene", "patch_mean_distance",
                                       "whole_model_distances", "hole_region_distances",
-                                      "new_vertex_error", "feature_recovery", "validity",
-                                      "classification", "arrow_visibility"}));
+                                      "new_vertex_error", "literature_metrics", "feature_recovery",
+                                      "validity", "classification", "arrow_visibility"}));
   MethodResult nothing;
   EXPECT_EQ(phase_names(evaluate(c, nothing)),
             (std::vector<std::string>{"complete_scene", "validity", "classification",
@@ -193,8 +238,8 @@ TEST(Evaluation, EachStepThatRunsIsTimedOnce) {
   EXPECT_EQ(phase_names(evaluate(c, result, EvaluationOptions{}, shared)),
             (std::vector<std::string>{"kept_faces", "repaired_scene", "patch_mean_distance",
                                       "whole_model_distances", "hole_region_distances",
-                                      "new_vertex_error", "feature_recovery", "validity",
-                                      "classification", "arrow_visibility"}));
+                                      "new_vertex_error", "literature_metrics", "feature_recovery",
+                                      "validity", "classification", "arrow_visibility"}));
   EXPECT_EQ(
       phase_names(evaluate(c, nothing, EvaluationOptions{}, shared)),
       (std::vector<std::string>{"kept_faces", "validity", "classification", "arrow_visibility"}));

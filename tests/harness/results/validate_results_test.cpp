@@ -135,6 +135,23 @@ TEST(ValidateResults, FindsANewVertexErrorAboveTheHoleHausdorff) {
                     {"new_vertex_mean_error_rel_diag = 0.0042 > hole_hausdorff_upper_rel_diag"});
 }
 
+// Chamfer-L1 above the mean distance, Chamfer-L2 above the squared RMS distance (hole
+// region), and a negative bound of a squared length.
+TEST(ValidateResults, FindsChamferDistancesAboveTheDistancesTheyAverage) {
+  expect_violations("chamfer.json",
+                    {{kCorner, "interval"}, {kCorner, "chamfer"}, {kCorner, "chamfer"}},
+                    {"chamfer_l2_lower_rel_diag2 = -1e-09 is negative",
+                     "chamfer_l1_rel_diag = 0.0015 > mean_distance_rel_diag = 0.001",
+                     "hole_chamfer_l2_rel_diag2 = 1e-05 > hole_rms_distance_rel_diag^2"});
+}
+
+// valid_repair_ok = 1 on an output that crosses itself and is not consistently oriented.
+TEST(ValidateResults, FindsAValidRepairThatIsNot) {
+  expect_violations("valid_repair.json", {{kCorner, "valid_repair"}, {kCorner, "valid_repair"}},
+                    {"valid_repair_ok = 1 but is_consistently_oriented = 0",
+                     "valid_repair_ok = 1 but patch_self_intersections_count = 3"});
+}
+
 TEST(ValidateResults, FindsFractionsFlagsAndCountsOutOfRange) {
   expect_violations("fraction_range.json", {{kCorner, "fraction_range"}},
                     {"missing_edge_present_fraction = 1.5 is outside [0, 1]"});

@@ -104,6 +104,7 @@ TEST(Job, TheEvaluationStepsAddUpToTheStage) {
                                        "whole_model_distances",
                                        "hole_region_distances",
                                        "new_vertex_error",
+                                       "literature_metrics",
                                        "feature_recovery",
                                        "validity",
                                        "classification",

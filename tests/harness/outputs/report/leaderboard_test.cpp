@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -130,6 +131,54 @@ TEST(Leaderboard, SuccessNeedsOkAndEveryHoleClosedAndFallbackCountsHoles) {
   EXPECT_EQ(*b.values[column("method_seconds_median")], 1.0);  // the crash is left out
 }
 
+// a: valid 1, 1, 0, 0 (all ok and closed): valid 0.5, closed but invalid 0.5. b: a crash (no
+// metrics: not valid) and three valid: 0.75 and 0. g guides: its holes are open with an
+// arrow, so its first column is the mean decision measure over (1, 0.5, a crash's 0), the ok
+// job without the metric left out: 0.5, marked and not ranked.
+TEST(Leaderboard, ValidShareClosedButInvalidAndTheDecisionMeasure) {
+  ResultsData data;
+  const double a_valid[] = {1, 1, 0, 0};
+  for (int i = 0; i < 4; ++i) {
+    auto r = record("a", "box/edge/" + std::to_string(i), "edge", 0.1);
+    r.metrics.push_back({"valid_repair_ok", a_valid[i]});
+    data.records.push_back(r);
+    auto b = record("b", "box/edge/" + std::to_string(i), "edge", 0.1);
+    b.metrics.push_back({"valid_repair_ok", 1.0});
+    if (i == 0) {
+      b.status = JobStatus::Crash;
+      b.metrics.clear();
+    }
+    data.records.push_back(b);
+    auto g = record("g", "box/edge/" + std::to_string(i), "edge", 0.1);
+    g.holes[0].closed = false;
+    g.holes[0].arrow = GuidanceArrow{};
+    const double handled[] = {1.0, 0.5, -1.0, -1.0};
+    if (handled[i] >= 0.0)
+      g.metrics.push_back({"decision_handled_fraction", handled[i]});
+    if (i == 2) {
+      g.status = JobStatus::Crash;
+      g.metrics.clear();
+    }
+    data.records.push_back(g);
+  }
+  EXPECT_EQ(methods_that_guide(data), (std::set<std::string>{"g"}));
+  const auto board = compute_leaderboard(data);
+  const auto valid = column("valid_share"), invalid = column("closed_invalid_share");
+  const auto& family = board.groups[0];
+  EXPECT_DOUBLE_EQ(*entry(family, "a").values[valid], 0.5);
+  EXPECT_DOUBLE_EQ(*entry(family, "a").values[invalid], 0.5);
+  EXPECT_DOUBLE_EQ(*entry(family, "b").values[valid], 0.75);
+  EXPECT_DOUBLE_EQ(*entry(family, "b").values[invalid], 0.0);
+  const auto& g = entry(family, "g");
+  EXPECT_TRUE(g.judged_by_decision);
+  EXPECT_DOUBLE_EQ(*g.values[valid], 0.5);
+  EXPECT_EQ(leaderboard_entry_cell(g, valid), "0.5 (decision)");
+  EXPECT_EQ(leaderboard_entry_cell(entry(family, "a"), valid), "0.5");
+  EXPECT_TRUE(entry(family, "b").best[valid]);
+  EXPECT_FALSE(g.best[valid]);
+  EXPECT_FALSE(entry(family, "a").best[valid]);
+}
+
 TEST(Leaderboard, PairsCountWinsTiesLossesWithinTheBounds) {
   auto data = two_methods();
   const auto board = compute_leaderboard(data);
@@ -188,9 +237,12 @@ TEST(Leaderboard, ReportWritesItFirstAndAsMarkdownAndLatex) {
   EXPECT_LT(leaderboard, html.find("<table"));  // before every other table
   EXPECT_LT(html.find("id=\"paired\""), html.find("Summary: method"));
   const auto md = read_text(dir / "report" / "leaderboard.md");
-  // The family row of a: success 1, no fallback, time 1 (each tied with b: both bold), hole
-  // Hausdorff 0.4375 to 3 digits (best, bold), no new-vertex error or coverage.
-  EXPECT_NE(md.find("| all | a | 6 | **1** | **0** | **0** | **0.438** | - | - | **1** |"),
+  // The family row of a: no valid share (records without valid_repair_ok, as written before
+  // it existed), success 1, no fallback or defect, time 1 (each tied with b: both bold), hole
+  // Hausdorff 0.4375 to 3 digits (best, bold), no literature metrics, new-vertex error or
+  // coverage.
+  EXPECT_NE(md.find("| all | a | 6 | - | - | **1** | **0** | **0** | **0.438** | - | - | - | - | - "
+                    "| **1** |"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("| box | edge | a | b | 4 | 4 | 4 | 0 | 0 | 0.12 | - |"), std::string::npos)
