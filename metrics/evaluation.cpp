@@ -155,9 +155,9 @@ PatchMean patch_mean(const Mesh& repaired, bool case_has_holes,
 struct HoleRegionDistance {
   DistanceSummary summary;
   bool converged = true;
-  Mesh truth;                              ///< the removed faces of the complete model
-  DirectedMeanDistance truth_to_repaired;  ///< for the Chamfer distances
-  std::optional<DirectedMeanDistance> patch_to_complete;
+  Mesh truth;                         ///< the removed faces of the complete model
+  DistanceSummary truth_to_repaired;  ///< each direction alone, for the Chamfer distances
+  std::optional<DistanceSummary> patch_to_complete;
 };
 HoleRegionDistance hole_region_distance(const Case& c, const std::vector<int>& removed,
                                         const PatchMean& patch,
@@ -168,15 +168,16 @@ HoleRegionDistance hole_region_distance(const Case& c, const std::vector<int>& r
   hole.truth = face_subset(c.complete, removed);
   const auto truth_to_repaired_h =
       directed_hausdorff(hole.truth, repaired_scene, options.hausdorff);
-  hole.truth_to_repaired = directed_mean_distance(hole.truth, repaired_scene, options.mean);
-  hole.summary = distance_summary(truth_to_repaired_h, hole.truth_to_repaired);
-  hole.converged = truth_to_repaired_h.converged && hole.truth_to_repaired.converged;
+  const auto truth_to_repaired_m = directed_mean_distance(hole.truth, repaired_scene, options.mean);
+  hole.truth_to_repaired = distance_summary(truth_to_repaired_h, truth_to_repaired_m);
+  hole.summary = hole.truth_to_repaired;
+  hole.converged = truth_to_repaired_h.converged && truth_to_repaired_m.converged;
   if (patch.patch) {
     const auto h = directed_hausdorff(*patch.patch, complete_scene, options.hausdorff);
     const DirectedMeanDistance& m = *patch.mean;
-    hole.summary = max_of(hole.summary, distance_summary(h, m));
+    hole.patch_to_complete = distance_summary(h, m);
+    hole.summary = max_of(hole.summary, *hole.patch_to_complete);
     hole.converged = hole.converged && h.converged && m.converged;
-    hole.patch_to_complete = m;
   }
   return hole;
 }
@@ -240,7 +241,10 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
   out.add(kHausdorffUpperRelDiag, model.hausdorff.upper / diagonal);
   add_interval(out, kMeanDistance, model.mean, diagonal);
   add_interval(out, kRmsDistance, model.rms, diagonal);
-  add_chamfer(out, kChamferL1, kChamferL2, chamfer_distance(d.a_to_b, d.b_to_a), diagonal);
+  add_chamfer(out, kChamferL1, kChamferL2,
+              chamfer_distance(distance_summary(d.hausdorff.a_to_b, d.a_to_b),
+                               distance_summary(d.hausdorff.b_to_a, d.b_to_a)),
+              diagonal);
 
   RegionMeshes regions;
   bool converged = d.converged();

@@ -91,15 +91,15 @@ double mean_distance_to_segments(const std::vector<EdgeSample>& samples,
 
 }  // namespace
 
-ChamferDistance chamfer_distance(const DirectedMeanDistance& a_to_b,
-                                 const DirectedMeanDistance& b_to_a) {
+ChamferDistance chamfer_distance(const DistanceSummary& a_to_b, const DistanceSummary& b_to_a) {
   ChamferDistance c;
-  c.l1 = {0.5 * (a_to_b.mean_lower + b_to_a.mean_lower), 0.5 * (a_to_b.mean + b_to_a.mean),
-          0.5 * (a_to_b.mean_upper + b_to_a.mean_upper)};
+  c.l1 = {0.5 * (a_to_b.mean.lower + b_to_a.mean.lower),
+          0.5 * (a_to_b.mean.value + b_to_a.mean.value),
+          0.5 * (a_to_b.mean.upper + b_to_a.mean.upper)};
   const auto square = [](double x) { return x * x; };
-  c.l2 = {0.5 * (square(a_to_b.rms_lower) + square(b_to_a.rms_lower)),
-          0.5 * (square(a_to_b.rms) + square(b_to_a.rms)),
-          0.5 * (square(a_to_b.rms_upper) + square(b_to_a.rms_upper))};
+  c.l2 = {0.5 * (square(a_to_b.rms.lower) + square(b_to_a.rms.lower)),
+          0.5 * (square(a_to_b.rms.value) + square(b_to_a.rms.value)),
+          0.5 * (square(a_to_b.rms.upper) + square(b_to_a.rms.upper))};
   return c;
 }
 

@@ -8,7 +8,8 @@
 // patch and the removed faces of the complete model), d(x, S) the distance to a surface:
 //  - Chamfer-L1 = (m(R, C) + m(C, R)) / 2 and Chamfer-L2 = (r(R, C)^2 + r(C, R)^2) / 2 with
 //    m and r the area-weighted directed mean and RMS distances (surface_distance.h): taken
-//    from those bounded searches, so each comes with a guaranteed interval;
+//    from those bounded searches (each direction's summary), so each comes with a guaranteed
+//    interval;
 //  - precision(tau) = area share of R within tau of C, recall(tau) = area share of C within
 //    tau of R, F(tau) = 2 P R / (P + R) (0 where P + R = 0);
 //  - normal consistency = (a(R, C) + a(C, R)) / 2 with a(A, B) the area-weighted mean over A of
@@ -41,13 +42,14 @@ namespace embree {
 class TriangleScene;
 }
 
-/// Chamfer-L1 and Chamfer-L2 from the two directed mean searches, with their intervals.
+/// Chamfer-L1 and Chamfer-L2 from the two directions' summaries (distance_summary: the
+/// mean and RMS intervals of each direction, clamped by what holds for true values), with
+/// their intervals. So Chamfer-L1 <= the larger direction's mean and Chamfer-L2 <= its RMS^2.
 struct ChamferDistance {
   BoundedValue l1;  ///< model units
   BoundedValue l2;  ///< model units squared
 };
-ChamferDistance chamfer_distance(const DirectedMeanDistance& a_to_b,
-                                 const DirectedMeanDistance& b_to_a);
+ChamferDistance chamfer_distance(const DistanceSummary& a_to_b, const DistanceSummary& b_to_a);
 
 struct SampledAgreementOptions {
   std::size_t samples = 10'000;    ///< points over the sampled (unshared) area

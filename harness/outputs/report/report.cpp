@@ -247,11 +247,21 @@ std::string leaderboard_html(const Leaderboard& board) {
 
   std::string out =
       "<h2 id=\"leaderboard\">Leaderboard</h2>\n<p>Per case family, each method's share of "
-      "successful jobs (status ok, every hole closed), share of holes a stand-in handled "
-      "(<em>fallback</em>), median hole Hausdorff distance and new-vertex error (relative to the "
-      "diagonal), mean coverage of the missing sharp edges, and median method time; the best of "
-      "each column is highlighted. Medians are over the jobs that have the metric: read them "
-      "beside the success share. Tick a box to see the target kinds. Also as <a "
+      "<em>valid</em> repairs first (every hole closed, the output closed, manifold and "
+      "consistently oriented, no self-intersection involving a new face, the input away from "
+      "the holes unchanged; a failed job is not valid). For a method that guides holes by "
+      "design the first cell is instead its <em>decision measure</em>, marked "
+      "<q>(decision)</q>: the share of holes handled as the truth's decision says (closed "
+      "where it says close, guided where it says guide), not ranked against valid shares. "
+      "Then the share of jobs <em>closed but invalid</em> (every hole closed, yet not valid), "
+      "of successful jobs (status ok, every hole closed), of holes a stand-in handled "
+      "(<em>fallback</em>) and of holes whose method found a defect in its own patch, the "
+      "median hole Hausdorff distance, the literature's metrics over the hole (median "
+      "Chamfer-L1, mean F-score at 1 % of the diagonal, mean normal consistency), median "
+      "new-vertex error (lengths relative to the diagonal), mean coverage of the missing sharp "
+      "edges, and median method time; the best of each column is highlighted. Medians and "
+      "means are over the jobs that have the metric: read them beside the valid share. Tick "
+      "a box to see the target kinds. Also as <a "
       "href=\"leaderboard.md\">leaderboard.md</a> and <a "
       "href=\"leaderboard.tex\">leaderboard.tex</a>.</p>\n";
   for (std::size_t i = 0; i < board.groups.size(); ++i) {
