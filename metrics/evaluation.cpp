@@ -206,9 +206,11 @@ void add_new_vertex_error(const Mesh& repaired, const embree::TriangleScene& com
     out.add(kNewVertexMeanErrorRelDiag, sum / count / diagonal);
 }
 
-// What the literature's sampled metrics take from the distances: the hole region's truth and
-// the patch (where the case has holes).
+// What the literature's sampled metrics take from the distances: the faces the repair shares
+// with the complete model (found by the whole-model search), the hole region's truth and the
+// patch (where the case has holes).
 struct RegionMeshes {
+  SharedFaces shared;  ///< a = the repaired mesh, b = the complete model
   std::optional<Mesh> truth;
   std::optional<Mesh> patch;
 };
@@ -232,9 +234,8 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
   laps.lap(evaluation_phases::kPatchMean);
   FirstBounds repaired_to_complete = first.repaired_to_complete;
   repaired_to_complete.steps = &patch_steps;
-  const SurfaceDistance d =
-      surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
-                       &repaired_to_complete, &first.complete_to_repaired);
+  SurfaceDistance d = surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
+                                       &repaired_to_complete, &first.complete_to_repaired);
   laps.lap(evaluation_phases::kWholeModelDistances);
   const DistanceSummary model = d.summary();
   out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);
@@ -247,6 +248,7 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
               diagonal);
 
   RegionMeshes regions;
+  regions.shared = std::move(d.shared);
   bool converged = d.converged();
   if (!removed.empty()) {
     HoleRegionDistance hole =
@@ -291,7 +293,7 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   sampling.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
   sampling.samples = options.literature_samples;
   // Faces the two models share exactly count exactly (distance 0, the same normal).
-  const SharedFaces shared = shared_faces(result.repaired, c.complete);
+  const SharedFaces& shared = regions.shared;
   add_agreement(out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
                 sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a),
                 sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b));

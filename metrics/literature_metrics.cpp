@@ -2,6 +2,7 @@
 
 #include "core/distances.h"
 #include "core/geometry.h"
+#include "core/portable_math.h"
 #include "metrics/embree/triangle_scene.h"
 
 #include <algorithm>
@@ -12,8 +13,6 @@
 namespace holebench {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The R2 sequence (Roberts' generalised golden ratio): a fixed low-discrepancy point in the
 // unit square for each index, the same on every machine.

@@ -1,15 +1,12 @@
 #include "metrics/normal_cone.h"
 
+#include "core/portable_math.h"
 #include "metrics/embree/triangle_scene.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace holebench {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
 
 Point triangle_unit_normal(const Point& a, const Point& b, const Point& c) {
   Point m = OpenMesh::cross(b - a, c - a);

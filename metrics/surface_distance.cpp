@@ -54,7 +54,7 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
                                  const FirstBounds* b_first_bounds) {
   // One first pass per direction, shared by the Hausdorff and the mean searches; faces the
   // two meshes share exactly are skipped by both.
-  const SharedFaces shared = shared_faces(a, b);
+  SharedFaces shared = shared_faces(a, b);
   const VertexDistances a_vertices =
       vertex_distances(a, b_scene, &shared.b_face_of_a, earlier_vertex_answers(a, a_first_bounds));
   const VertexDistances b_vertices =
@@ -71,6 +71,7 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
   // The shared first pass counts once, with the Hausdorff search.
   result.hausdorff.a_to_b.queries += a_vertices.queries;
   result.hausdorff.b_to_a.queries += b_vertices.queries;
+  result.shared = std::move(shared);
   return result;
 }
 

@@ -38,6 +38,7 @@
 #include "core/statistics.h"
 #include "metrics/growing_box.h"
 #include "metrics/hausdorff_distance.h"
+#include "metrics/shared_faces.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -213,6 +214,8 @@ struct SurfaceDistance {
   HausdorffResult hausdorff;
   DirectedMeanDistance a_to_b;
   DirectedMeanDistance b_to_a;
+  /// The faces A and B share exactly (skipped by both searches), for later metrics.
+  SharedFaces shared;
   /// The symmetric values with their clamped intervals.
   DistanceSummary summary() const {
     return max_of(distance_summary(hausdorff.a_to_b, a_to_b),

@@ -22,6 +22,15 @@ bool has(const Evaluation& e, const char* name) {
   return e.find(name) != nullptr;
 }
 
+// The complete model as the repair, its hole's removed faces marked new: an exact patch.
+MethodResult complete_model_as_repair(const Case& c) {
+  MethodResult result;
+  result.repaired = c.complete;
+  for (int f : c.holes[0].removed_faces)
+    result.repaired.data(result.repaired.face_handle(f)).provenance = Provenance::New;
+  return result;
+}
+
 TEST(Evaluation, NamesCarryTheirUnit) {
   const Case c = generators::make_case("box/corner");
   MethodResult result;
@@ -35,10 +44,7 @@ TEST(Evaluation, NamesCarryTheirUnit) {
 // everywhere, closed, valid; no classification or arrow metrics (nothing to judge).
 TEST(Evaluation, CompleteModelScoresZero) {
   const Case c = generators::make_case("box/corner");
-  MethodResult result;
-  result.repaired = c.complete;
-  for (int f : c.holes[0].removed_faces)
-    result.repaired.data(result.repaired.face_handle(f)).provenance = Provenance::New;
+  MethodResult result = complete_model_as_repair(c);
   const Evaluation e = evaluate(c, result);
   for (const char* name : {"hausdorff_upper_rel_diag", "mean_distance_rel_diag",
                            "rms_distance_rel_diag", "hole_hausdorff_upper_rel_diag",
@@ -87,10 +93,7 @@ TEST(Evaluation, UnrepairedInputIsOpenAndFar) {
 // removed faces play the patch, one of their vertices pushed through the opposite side.
 TEST(Evaluation, ASelfIntersectingPatchIsNotAValidRepair) {
   const Case c = generators::make_case("box/corner");
-  MethodResult result;
-  result.repaired = c.complete;
-  for (int f : c.holes[0].removed_faces)
-    result.repaired.data(result.repaired.face_handle(f)).provenance = Provenance::New;
+  MethodResult result = complete_model_as_repair(c);
   HoleReport report;
   report.closed = true;
   result.holes.push_back(report);

@@ -25,14 +25,23 @@ Mesh tent(double h) {
   return build_mesh(soup);
 }
 
+// The unit normals of the tent's two sides (x < 0, x > 0), computed here from their planes'
+// points, and the angle between them in degrees.
+struct TentNormals {
+  Point left, right;
+  double dihedral_deg() const { return std::acos(OpenMesh::dot(left, right)) * 180.0 / kPi; }
+};
+TentNormals tent_normals(double h) {
+  return {triangle_unit_normal(Point(-1, 0, 0), Point(0, 0, h), Point(0, 1, h)),
+          triangle_unit_normal(Point(0, 0, h), Point(1, 0, 0), Point(1, 1, 0))};
+}
+
 TEST(NormalConeAngle, BothSidesOfACreaseAreInTheConeOnTheRidge) {
   const double h = 0.5;
   const Mesh mesh = tent(h);
   const embree::TriangleScene scene(mesh);
-  const Point left = triangle_unit_normal(Point(-1, 0, 0), Point(0, 0, h), Point(0, 1, h));
-  const Point right = triangle_unit_normal(Point(0, 0, h), Point(1, 0, 0), Point(1, 1, 0));
-  const double dihedral = std::acos(OpenMesh::dot(left, right)) * 180.0 / kPi;
-  ASSERT_GT(dihedral, 50.0);
+  const auto [left, right] = tent_normals(h);
+  ASSERT_GT(tent_normals(h).dihedral_deg(), 50.0);
   for (const Point& n : {left, right}) {
     const auto cone = normal_cone_angle(scene, Point(0.0, 0.5, h), n);
     EXPECT_EQ(cone.cone_faces, 2);  // one triangle of each side touches this ridge point
@@ -49,13 +58,11 @@ TEST(NormalConeAngle, AwayFromTheCreaseTheConeIsTheFaceBelow) {
   const double h = 0.5;
   const Mesh mesh = tent(h);
   const embree::TriangleScene scene(mesh);
-  const Point left = triangle_unit_normal(Point(-1, 0, 0), Point(0, 0, h), Point(0, 1, h));
-  const Point right = triangle_unit_normal(Point(0, 0, h), Point(1, 0, 0), Point(1, 1, 0));
+  const auto [left, right] = tent_normals(h);
   // On the right side, far from the ridge, with the left side's normal: the full dihedral.
   const auto cone = normal_cone_angle(scene, Point(0.6, 0.3, h * 0.4), left);
   EXPECT_LE(cone.cone_faces, 2);  // the face below and, at most, its neighbour in the quad
-  const double expected = std::acos(OpenMesh::dot(left, right)) * 180.0 / kPi;
-  EXPECT_NEAR(cone.smallest_deg, expected, 1e-9);
+  EXPECT_NEAR(cone.smallest_deg, tent_normals(h).dihedral_deg(), 1e-9);
   // A flipped normal deviates by 180 degrees but agrees fully in |cosine|.
   const auto flipped = normal_cone_angle(scene, Point(0.6, 0.3, h * 0.4), -right);
   EXPECT_NEAR(flipped.smallest_deg, 180.0, 1e-6);
