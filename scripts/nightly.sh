@@ -24,7 +24,7 @@ esac
 out="${1:-build/nightly}"
 history_dir="${out%/}-history"
 holebench=build/release/harness/holebench
-# No 3D viewer meshes: over 6000 jobs on CAD meshes they would take about 2 GB.
+# No 3D viewer meshes: the nightly's report is read for its tables and history.
 "$holebench" run --suite nightly --out "$out" --no-viewer-meshes
 "$holebench" cases gallery "$out" > /dev/null  # linked from the report
 if [ "$keep" -gt 0 ]; then

@@ -17,6 +17,8 @@ packages=(
   libopenimageio-dev libopencv-core-dev openimageio-tools
   # formatting, JSON, command line
   libfmt-dev nlohmann-json3-dev libcli11-dev
+  # the viewer's mesh files, gzip-compressed (harness/outputs/gzip_bytes.h)
+  zlib1g-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   # METIS: CGAL's parallel Hausdorff distance, the benchmarks' two-thread reference

@@ -1,7 +1,6 @@
 #include "harness/outputs/viewer/viewer_page.h"
 
 #include "core/environment_path.h"
-#include "harness/outputs/file_bytes.h"
 #include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/heat_map.h"
 #include "harness/outputs/viewer/viewer_mesh.h"
@@ -20,9 +19,6 @@
 namespace holebench::viewer {
 namespace {
 
-using harness::base64;
-using harness::read_bytes;
-
 void write_text(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path, std::ios::binary);
@@ -31,14 +27,22 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
     throw std::runtime_error(path.string() + ": cannot write");
 }
 
-/// One case of the viewer: its meshes by the name the tick boxes show.
-struct ViewerCase {
-  std::string label;
-  std::vector<std::pair<std::string, std::filesystem::path>> meshes;
+/// One mesh of a case: the name its tick box shows, its file, and whether it is a job's patch
+/// (assembled with the case's holed mesh in the page).
+struct ViewerCaseMesh {
+  std::string name;
+  std::filesystem::path file;
+  bool patch = false;
 };
 
-/// The cases whose complete and holed meshes exist, each with the repaired meshes of its
-/// jobs (named by method, and user where it is not no_user), in the records' order.
+/// One case of the viewer: its meshes in the order of the tick boxes.
+struct ViewerCase {
+  std::string label;
+  std::vector<ViewerCaseMesh> meshes;
+};
+
+/// The cases whose complete and holed meshes exist, each with the patches of its jobs (named
+/// by method, and user where it is not no_user), in the records' order.
 std::vector<ViewerCase> find_cases(const harness::ResultsData& data,
                                    const std::filesystem::path& results_dir) {
   using Key = std::tuple<std::string, double, std::uint64_t>;
@@ -46,8 +50,8 @@ std::vector<ViewerCase> find_cases(const harness::ResultsData& data,
   std::vector<Key> order;
   for (const auto& record : data.records) {
     const auto& job = record.job;
-    const auto repaired = results_dir / repaired_mesh_file(job);
-    if (!std::filesystem::exists(repaired))
+    const auto patch = results_dir / patch_mesh_file(job);
+    if (!std::filesystem::exists(patch))
       continue;
     const Key key{job.case_id, job.noise_percent, job.seed};
     auto [it, inserted] = by_key.try_emplace(key);
@@ -61,18 +65,26 @@ std::vector<ViewerCase> find_cases(const harness::ResultsData& data,
       }
       order.push_back(key);
       c.label = fmt::format("{} (noise {} %, seed {})", job.case_id, job.noise_percent, job.seed);
-      c.meshes.emplace_back("complete", complete);
-      c.meshes.emplace_back("holed", holed);
+      c.meshes.push_back({"complete", complete, false});
+      c.meshes.push_back({"holed", holed, false});
     }
     const std::string name =
         job.user == "no_user" ? job.method_id : job.method_id + " (" + job.user + ")";
-    c.meshes.emplace_back(name, repaired);
+    c.meshes.push_back({name, patch, true});
   }
   std::sort(order.begin(), order.end());
   std::vector<ViewerCase> out;
   for (const auto& key : order)
     out.push_back(std::move(by_key.at(key)));
   return out;
+}
+
+/// `file` as the report page links it: relative to the report folder, '/'-separated.
+std::string link_from(const std::filesystem::path& report_dir, const std::filesystem::path& file) {
+  const auto absolute_report =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(report_dir));
+  const auto absolute_file = std::filesystem::weakly_canonical(std::filesystem::absolute(file));
+  return absolute_file.lexically_relative(absolute_report).generic_string();
 }
 
 nlohmann::json colour_json(const render::Rgb& c) {
@@ -140,7 +152,8 @@ ViewerSection write_viewer(const harness::ResultsData& data,
     cases.resize(options.max_cases);
   }
   const auto dir = report_dir / "viewer";
-  std::filesystem::create_directories(dir / "data");
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove_all(dir / "data");  // an older report's copies of the meshes
   std::filesystem::copy_file(three_js, dir / "three.min.js",
                              std::filesystem::copy_options::overwrite_existing);
   std::filesystem::copy_file(orbit_js, dir / "OrbitControls.js",
@@ -149,23 +162,23 @@ ViewerSection write_viewer(const harness::ResultsData& data,
   section.files = {"viewer/OrbitControls.js", "viewer/three.min.js", "viewer/viewer.js"};
 
   nlohmann::json list = nlohmann::json::array();
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    nlohmann::json payload = nlohmann::json::object();
+  // The meshes stay where the run wrote them: the page loads each file by its link.
+  for (const auto& c : cases) {
     nlohmann::json names = nlohmann::json::array();
-    for (const auto& [name, path] : cases[i].meshes) {
-      payload[name] = base64(read_bytes(path));
-      names.push_back(name);
+    nlohmann::json files = nlohmann::json::array();
+    nlohmann::json patches = nlohmann::json::array();
+    for (const auto& mesh : c.meshes) {
+      names.push_back(mesh.name);
+      files.push_back(link_from(report_dir, mesh.file));
+      patches.push_back(mesh.patch);
     }
-    const std::string file = fmt::format("viewer/data/{}.js", i);
-    write_text(report_dir / file,
-               fmt::format("holebenchViewer.receive({}, {});\n", i, payload.dump()));
-    section.files.push_back(file);
-    list.push_back({{"id", cases[i].label}, {"data", file}, {"meshes", names}});
+    list.push_back({{"id", c.label}, {"meshes", names}, {"files", files}, {"patch", patches}});
   }
   section.cases = cases.size();
   section.html = section_html(fmt::format(
-      "<p>Per case, the complete model, the holed input and each method's repaired mesh, as the "
-      "run wrote them (<code>meshes/*.ply</code>). It opens on the case's first hole, "
+      "<p>Per case, the complete model, the holed input and each method's repaired mesh (the "
+      "holed input and the method's patch), loaded from the files the run wrote "
+      "(<code>meshes/*.js</code>). It opens on the case's first hole, "
       "seen as the close-up snapshot sees it; <em>whole model</em> shows the models whole. Drag "
       "to turn, scroll to zoom, right-drag to pan; tick the meshes to show them side by side at "
       "the same scale (one ticked: one at a time). Kept faces are grey; the patch is "

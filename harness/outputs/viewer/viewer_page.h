@@ -1,11 +1,13 @@
 // The 3D viewer of `holebench report`: per case (and noise level and seed) the complete,
-// holed and repaired meshes that the run wrote (viewer_mesh.h), drawn with three.js in
-// report.html, with orbit controls, a tick box per mesh and the pictures' error colouring.
+// holed and repaired meshes, drawn with three.js in report.html, with orbit controls, a tick
+// box per mesh and the pictures' error colouring. A repaired mesh is assembled in the page
+// from the case's holed mesh and the job's patch (viewer_mesh.h).
 //
-// Everything the page needs is copied into report/viewer/: three.js r111 (Debian's
-// libjs-three: three.min.js and examples/js/controls/OrbitControls.js), the viewer's script,
-// and one data file per case (data/<n>.js: the case's PLY files in base64, loaded by a
-// <script> element when the case is chosen), so the page works offline and from file://.
+// Copied into report/viewer/: three.js r111 (Debian's libjs-three: three.min.js and
+// examples/js/controls/OrbitControls.js) and the viewer's script. The meshes are not copied:
+// the page links the run's files (meshes/*.js, scripts that hand their PLY to the page, loaded
+// by a <script> element when the case is chosen), so the page works offline and from file://
+// as long as the report stays beside the run's meshes/ folder.
 #pragma once
 
 #include "harness/results/results_reader.h"
@@ -35,8 +37,8 @@ struct ViewerSection {
 std::filesystem::path three_dir(const ViewerOptions& options);
 
 /// Writes report_dir/viewer/ for the records of `data` whose meshes are in results_dir/meshes/
-/// and returns the page's section. Without meshes or without three.js the section says why.
-/// Throws std::runtime_error when a file cannot be written.
+/// (linked, not copied) and returns the page's section. Without meshes or without three.js the
+/// section says why. Throws std::runtime_error when a file cannot be written.
 ViewerSection write_viewer(const harness::ResultsData& data,
                            const std::filesystem::path& results_dir,
                            const std::filesystem::path& report_dir,

@@ -14,8 +14,10 @@ const char* viewer_script() {
   var canvas = document.getElementById('viewer-canvas');
   var bar = document.getElementById('viewer-bar');
   var wholeButton = document.getElementById('viewer-whole');
-  var payloads = {};   // case index -> {name: base64 PLY}
-  var parsed = {};     // case index -> {name: parsed PLY}
+  var payloads = {};   // file name -> base64 of its gzip PLY (meshes/*.js)
+  var requested = {};  // file name -> its <script> element was added
+  var parsed = {};     // case index -> {name: parsed PLY, a job's assembled}
+  var parsing = {};    // case index -> its files are being decompressed
   var shown = {};      // case index -> {name: ticked}
   var whole = {};      // case index -> true: the whole models, false: the first hole close up
   var current = -1;
@@ -24,12 +26,16 @@ const char* viewer_script() {
 
   function say(text) { status.textContent = text; }
 
+  // A viewer file's payload: base64 of a gzip stream, decompressed by the browser.
   function decode(base64) {
     var binary = window.atob(base64);
     var bytes = new Uint8Array(binary.length);
     for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
-    return bytes.buffer;
+    var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+    return new Response(stream).arrayBuffer();
   }
+
+  function baseName(file) { return file.split('/').pop(); }
 
   // The viewer meshes' PLY (harness/outputs/viewer/viewer_mesh.h).
   function parsePly(buffer) {
@@ -42,6 +48,7 @@ const char* viewer_script() {
     }
     if (headerEnd < 0 || text.indexOf('binary_little_endian') < 0) throw new Error('not a viewer PLY');
     var counts = {vertex: 0, face: 0, edge: 0};
+    var split = text.indexOf('property uchar splits') >= 0;  // a job's patch file
     var scale = 0;
     var direction = null, target = null, distance = 0, fieldOfView = 40;
     text.split('\n').forEach(function (line) {
@@ -69,6 +76,7 @@ const char* viewer_script() {
     }
     var faces = new Int32Array(counts.face * 3);
     var patch = new Uint8Array(counts.face);
+    var splits = [];  // by face of a patch file: {n, quality} or null
     for (var f = 0; f < counts.face; ++f) {
       if (view.getUint8(at) !== 3) throw new Error('a face that is not a triangle');
       faces[3 * f] = view.getInt32(at + 1, true);
@@ -76,15 +84,130 @@ const char* viewer_script() {
       faces[3 * f + 2] = view.getInt32(at + 9, true);
       patch[f] = view.getUint8(at + 13);
       at += 14;
+      if (!split) continue;
+      var n = view.getUint8(at);
+      var m = view.getUint8(at + 1);
+      at += 2;
+      var q = new Float32Array(m);
+      for (var k = 0; k < m; ++k, at += 4) q[k] = view.getFloat32(at, true);
+      splits.push(n > 0 ? {n: n, quality: q} : null);
     }
     var edges = new Int32Array(counts.edge * 2);
     for (var e = 0; e < counts.edge; ++e, at += 8) {
       edges[2 * e] = view.getInt32(at, true);
       edges[2 * e + 1] = view.getInt32(at + 4, true);
     }
-    return {positions: positions, quality: quality, faces: faces, patch: patch, edges: edges,
-            scale: scale, direction: direction, target: target, distance: distance,
-            fieldOfView: fieldOfView};
+    at += 8 * (counts.sewn_vertex || 0);  // where the patch is sewn: not needed to draw it
+    var dropped = new Int32Array(counts.dropped_face || 0);
+    for (var d = 0; d < dropped.length; ++d, at += 4) dropped[d] = view.getInt32(at, true);
+    var ply = {positions: positions, quality: quality, faces: faces, patch: patch, edges: edges,
+               dropped: dropped, scale: scale, direction: direction, target: target,
+               distance: distance, fieldOfView: fieldOfView};
+    return split ? splitFaces(ply, splits) : ply;
+  }
+
+  // The patch file's new faces split into n x n pieces, each piece's corners with their own
+  // distances (viewer_mesh.h: vertex (i, j) at c0 + (i (c1 - c0) + j (c2 - c0)) / n).
+  function splitFaces(ply, splits) {
+    var positions = Array.prototype.slice.call(ply.positions);
+    var quality = Array.prototype.slice.call(ply.quality);
+    var faces = [];
+    var patch = [];
+    var count = ply.faces.length / 3;
+    for (var f = 0; f < count; ++f) {
+      var s = splits[f];
+      var corner = [ply.faces[3 * f], ply.faces[3 * f + 1], ply.faces[3 * f + 2]];
+      if (!s) {
+        faces.push(corner[0], corner[1], corner[2]);
+        patch.push(ply.patch[f]);
+        continue;
+      }
+      var n = s.n;
+      var first = quality.length;
+      var c = corner.map(function (v) {
+        return [ply.positions[3 * v], ply.positions[3 * v + 1], ply.positions[3 * v + 2]];
+      });
+      var at = 0;
+      for (var j = 0; j <= n; ++j) {
+        for (var i = 0; i + j <= n; ++i, ++at) {
+          for (var d = 0; d < 3; ++d) {
+            positions.push(c[0][d] + (i * (c[1][d] - c[0][d]) + j * (c[2][d] - c[0][d])) / n);
+          }
+          quality.push(s.quality[at]);
+        }
+      }
+      var index = function (i, j) { return first + j * (n + 1) - j * (j - 1) / 2 + i; };
+      for (var jj = 0; jj < n; ++jj) {
+        for (var ii = 0; ii + jj < n; ++ii) {
+          faces.push(index(ii, jj), index(ii + 1, jj), index(ii, jj + 1));
+          patch.push(ply.patch[f]);
+          if (ii + jj + 1 < n) {
+            faces.push(index(ii + 1, jj), index(ii + 1, jj + 1), index(ii, jj + 1));
+            patch.push(ply.patch[f]);
+          }
+        }
+      }
+    }
+    ply.positions = new Float32Array(positions);
+    ply.quality = new Float32Array(quality);
+    ply.faces = new Int32Array(faces);
+    ply.patch = new Uint8Array(patch);
+    return ply;
+  }
+
+  // A job's repaired mesh: the holed mesh without the faces the repair dropped, and the
+  // patch (its faces and the repaired mesh's open edges), as viewer_mesh.h writes them.
+  function assemble(holed, patch) {
+    var base = holed.positions.length / 3;
+    var drop = new Uint8Array(holed.faces.length / 3);
+    for (var d = 0; d < patch.dropped.length; ++d) drop[patch.dropped[d]] = 1;
+    var keptCount = drop.length - patch.dropped.length;
+    var patchCount = patch.faces.length / 3;
+    var positions = new Float32Array(holed.positions.length + patch.positions.length);
+    positions.set(holed.positions);
+    positions.set(patch.positions, holed.positions.length);
+    var quality = new Float32Array(base + patch.quality.length);
+    quality.set(patch.quality, base);
+    var faces = new Int32Array(3 * (keptCount + patchCount));
+    var flags = new Uint8Array(keptCount + patchCount);
+    var at = 0;
+    for (var f = 0; f < drop.length; ++f) {
+      if (drop[f]) continue;
+      faces.set(holed.faces.subarray(3 * f, 3 * f + 3), 3 * at);
+      ++at;
+    }
+    for (var g = 0; g < patchCount; ++g, ++at) {
+      for (var k = 0; k < 3; ++k) faces[3 * at + k] = base + patch.faces[3 * g + k];
+      flags[at] = patch.patch[g];
+    }
+    var edges = new Int32Array(patch.edges.length);
+    for (var e = 0; e < edges.length; ++e) edges[e] = base + patch.edges[e];
+    return {positions: positions, quality: quality, faces: faces, patch: flags, edges: edges,
+            dropped: new Int32Array(0), scale: patch.scale, direction: holed.direction,
+            target: holed.target, distance: holed.distance, fieldOfView: holed.fieldOfView};
+  }
+
+  // Decompresses and parses the case's files (all received), then shows the case.
+  function prepare(index) {
+    if (parsing[index]) return;
+    parsing[index] = true;
+    var c = cases[index];
+    Promise.all(c.files.map(function (file) { return decode(payloads[baseName(file)]); }))
+      .then(function (buffers) {
+        var plies = buffers.map(parsePly);
+        var holed = plies[c.meshes.indexOf('holed')];
+        var out = {};
+        c.meshes.forEach(function (name, i) {
+          out[name] = c.patch[i] ? assemble(holed, plies[i]) : plies[i];
+        });
+        parsed[index] = out;
+        if (index === current) show();
+      })
+      .catch(function (e) { parsing[index] = false; say('error: ' + e.message); });
+  }
+
+  function received(index) {
+    return cases[index].files.every(function (file) { return payloads[baseName(file)] !== undefined; });
   }
 
   function gamma(c) { return [Math.pow(c[0], 1 / 2.2), Math.pow(c[1], 1 / 2.2), Math.pow(c[2], 1 / 2.2)]; }
@@ -198,10 +321,6 @@ const char* viewer_script() {
   function show() {
     var index = current;
     var meshes = cases[index].meshes;
-    if (!parsed[index]) {
-      parsed[index] = {};
-      meshes.forEach(function (name) { parsed[index][name] = parsePly(decode(payloads[index][name])); });
-    }
     var t = initThree();
     while (t.group.children.length > 0) {
       var old = t.group.children[0];
@@ -308,19 +427,23 @@ const char* viewer_script() {
       });
     }
     buildToggles(index);
-    if (payloads[index]) { show(); return; }
+    if (parsed[index]) { show(); return; }
     say('loading ' + cases[index].id + ' ...');
-    var script = document.createElement('script');
-    script.src = cases[index].data;
-    script.onerror = function () { say('error: cannot load ' + cases[index].data); };
-    document.head.appendChild(script);
+    if (received(index)) { prepare(index); return; }
+    cases[index].files.forEach(function (file) {
+      if (requested[baseName(file)]) return;
+      requested[baseName(file)] = true;
+      var script = document.createElement('script');
+      script.src = file;
+      script.onerror = function () { say('error: cannot load ' + file); };
+      document.head.appendChild(script);
+    });
   }
 
   window.holebenchViewer = {
-    receive: function (index, payload) {
-      payloads[index] = payload;
-      if (index !== current) return;
-      try { show(); } catch (e) { say('error: ' + e.message); }
+    receiveMesh: function (name, payload) {
+      payloads[name] = payload;
+      if (current >= 0 && received(current)) prepare(current);
     }
   };
 
@@ -338,7 +461,7 @@ const char* viewer_script() {
   select.addEventListener('change', function () { choose(parseInt(select.value, 10)); });
   if (wholeButton) {
     wholeButton.addEventListener('click', function () {
-      if (current < 0 || !payloads[current]) return;
+      if (current < 0 || !parsed[current]) return;
       whole[current] = !whole[current];
       show();
     });

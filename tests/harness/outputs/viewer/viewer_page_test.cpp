@@ -41,8 +41,8 @@ std::filesystem::path fake_three(const std::filesystem::path& dir) {
   return dir;
 }
 
-// With meshes and three.js: three.js and the script copied, one data file for the case
-// (its three meshes), and the section with the canvas and the case list.
+// With meshes and three.js: three.js and the script copied, no copy of the meshes (the page
+// links the run's files), and the section with the canvas and the case list.
 TEST(ViewerPage, WritesTheFilesAndTheSection) {
   const auto dir = fresh_dir("viewer_page_files");
   const auto data = one_job(dir);
@@ -52,15 +52,20 @@ TEST(ViewerPage, WritesTheFilesAndTheSection) {
   EXPECT_TRUE(section.note.empty()) << section.note;
   EXPECT_EQ(section.cases, 1u);
   const std::vector<std::string> files = {"viewer/OrbitControls.js", "viewer/three.min.js",
-                                          "viewer/viewer.js", "viewer/data/0.js"};
+                                          "viewer/viewer.js"};
   EXPECT_EQ(section.files, files);
   for (const auto& file : files)
     EXPECT_TRUE(std::filesystem::exists(dir / "report" / file)) << file;
+  EXPECT_FALSE(std::filesystem::exists(dir / "report/viewer/data"));
   EXPECT_EQ(read_text(dir / "report/viewer/three.min.js"), "// three\n");
-  const std::string payload = read_text(dir / "report/viewer/data/0.js");
-  EXPECT_EQ(payload.rfind("holebenchViewer.receive(0, {\"complete\":\"", 0), 0u);
-  EXPECT_NE(payload.find("\"holed\":\""), std::string::npos);
-  EXPECT_NE(payload.find("\"liepa_cgal\":\""), std::string::npos);
+  for (const char* link :
+       {"../meshes/box_corner_0_0.complete.js", "../meshes/box_corner_0_0.holed.js",
+        "../meshes/box_corner_liepa_cgal_no_user_0_0.patch.js"}) {
+    EXPECT_NE(section.html.find(link), std::string::npos) << link;
+    EXPECT_TRUE(std::filesystem::exists(dir / "report" / link)) << link;
+  }
+  const std::string holed = read_text(dir / "meshes/box_corner_0_0.holed.js");
+  EXPECT_EQ(holed.rfind("holebenchViewer.receiveMesh(\"box_corner_0_0.holed.js\", \"", 0), 0u);
   EXPECT_NE(section.html.find("id=\"viewer-canvas\""), std::string::npos);
   EXPECT_NE(section.html.find("box/corner (noise 0 %, seed 0)"), std::string::npos);
 }
