@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -170,10 +171,16 @@ void BM_EvaluationGrowth_PerJob(benchmark::State& state) {
   state.SetLabel(fmt::format("{} triangles", job.c.complete.n_faces()));
   const EvaluationOptions options;
   const CaseEvaluation shared(job.c, options);
+  std::map<std::string, double> phase_seconds;
   for (auto _ : state) {
     const Evaluation evaluation = evaluate(job.c, job.result, options, shared);
     benchmark::DoNotOptimize(evaluation.values.size());
+    for (const auto& phase : evaluation.phases)
+      phase_seconds[phase.phase] += phase.seconds;
   }
+  // Each phase's mean time per job, in milliseconds, where the time goes as the model grows.
+  for (const auto& [name, seconds] : phase_seconds)
+    state.counters[name + "_ms"] = 1000.0 * seconds / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_EvaluationGrowth_PerJob)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 

@@ -8,6 +8,8 @@
 // with no region; the data is copied with the mesh and read in O(1).
 #pragma once
 
+#include <array>
+
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <cstdint>
@@ -68,6 +70,16 @@ inline bool is_new(const Mesh& mesh, FaceHandle f) {
 }
 inline bool is_new(const Mesh& mesh, VertexHandle v) {
   return provenance(mesh, v) == Provenance::New;
+}
+
+/// The vertex indices of a triangle in the face-vertex circulator's order (from the to-vertex
+/// of the face's halfedge), read straight off the halfedges: faster than the circulator.
+inline std::array<int, 3> triangle_vertex_indices(const Mesh& mesh, FaceHandle f) {
+  HalfedgeHandle h = mesh.halfedge_handle(f);
+  std::array<int, 3> ids{};
+  for (int k = 0; k < 3; ++k, h = mesh.next_halfedge_handle(h))
+    ids[k] = mesh.to_vertex_handle(h).idx();
+  return ids;
 }
 
 /// Marks every vertex and face of `mesh` as original (done after reading or generating).

@@ -2,6 +2,8 @@
 
 #include "core/geometry.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/feature_recovery.h"
+#include "metrics/hole_matching.h"
 
 namespace holebench {
 
@@ -17,13 +19,16 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
     input_hausdorff_bounds_ =
         std::make_unique<HausdorffCellBounds>(c.input, *complete_scene_, input_pass);
     if (c.input.n_faces() > 0) {
-      const embree::TriangleScene input_scene(c.input);
+      input_scene_ = std::make_unique<embree::TriangleScene>(c.input);
       complete_cell_bounds_ = std::make_unique<MeanCellBounds>(
-          c.complete, input_scene, first_pass(c.complete, c.input, input_scene), mean);
+          c.complete, *input_scene_, first_pass(c.complete, c.input, *input_scene_), mean);
     }
   }
   if (options.self_intersections)
     input_self_intersections_ = holebench::input_self_intersections(c.input);
+  input_topology_ = holebench::input_topology(c.input);
+  input_loop_centroids_ = holebench::input_loop_centroids(c);
+  input_corner_distances_ = holebench::input_corner_distances(c);
 }
 
 CaseEvaluation::~CaseEvaluation() = default;

@@ -6,11 +6,13 @@
 
 #include "core/case.h"
 #include "metrics/evaluation.h"
+#include "metrics/input_topology.h"
 #include "metrics/surface_distance.h"
 #include "metrics/validity.h"
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace holebench {
 
@@ -25,9 +27,10 @@ class CaseEvaluation {
   /// complete model (the faces a repair keeps need none of their own) and of the complete
   /// model's faces against the input (a repair is the input away from its new faces); the
   /// first bounds of the Hausdorff search of the input's faces against the complete model
-  /// (hausdorff_distance.h, HausdorffCellBounds); and,
-  /// where `options` test self-intersections, the input's own intersecting pairs
-  /// (validity.h).
+  /// (hausdorff_distance.h, HausdorffCellBounds); where `options` test self-intersections,
+  /// the input's own intersecting pairs (validity.h); and the input's topology, loop
+  /// centroids and nearest vertices to the missing corners, so that each job's validity,
+  /// hole matching and corner errors look at its changes only.
   CaseEvaluation(const Case& c, const EvaluationOptions& options);
   ~CaseEvaluation();
   CaseEvaluation(const CaseEvaluation&) = delete;
@@ -35,6 +38,8 @@ class CaseEvaluation {
 
   /// The complete model's scene, or nullptr where the case has no complete model.
   const embree::TriangleScene* complete_scene() const { return complete_scene_.get(); }
+  /// The input's scene, or nullptr where the case has no complete model or no input faces.
+  const embree::TriangleScene* input_scene() const { return input_scene_.get(); }
   /// The input's faces' first bounds against the complete model, or nullptr.
   const MeanCellBounds* input_cell_bounds() const { return input_cell_bounds_.get(); }
   /// The complete model's faces' first bounds against the input, or nullptr.
@@ -47,13 +52,23 @@ class CaseEvaluation {
   const InputSelfIntersections* input_self_intersections() const {
     return input_self_intersections_ ? &*input_self_intersections_ : nullptr;
   }
+  /// The input's boundary loops, non-manifold vertices and orientation conflicts.
+  const InputTopology& input_topology() const { return input_topology_; }
+  /// The centroids of the input's boundary loops (hole_matching.h).
+  const std::vector<Point>& input_loop_centroids() const { return input_loop_centroids_; }
+  /// Per missing corner, the distance to the nearest input vertex (feature_recovery.h).
+  const std::vector<double>& input_corner_distances() const { return input_corner_distances_; }
 
  private:
   std::unique_ptr<embree::TriangleScene> complete_scene_;
+  std::unique_ptr<embree::TriangleScene> input_scene_;
   std::unique_ptr<MeanCellBounds> input_cell_bounds_;
   std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
   std::unique_ptr<HausdorffCellBounds> input_hausdorff_bounds_;
   std::optional<InputSelfIntersections> input_self_intersections_;
+  InputTopology input_topology_;
+  std::vector<Point> input_loop_centroids_;
+  std::vector<double> input_corner_distances_;
 };
 
 /// evaluate() with what the case's evaluations share; `shared` must have been built from the

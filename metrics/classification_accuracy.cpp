@@ -5,8 +5,12 @@
 namespace holebench {
 
 ClassificationAccuracy classification_accuracy(const Case& c, const MethodResult& result) {
+  return classification_accuracy(c, result, match_holes(c, result.holes));
+}
+
+ClassificationAccuracy classification_accuracy(const Case& c, const MethodResult& result,
+                                               const std::vector<HoleMatch>& matches) {
   ClassificationAccuracy accuracy;
-  const auto matches = match_holes(c, result.holes);
   for (std::size_t i = 0; i < result.holes.size(); ++i) {
     const auto& report = result.holes[i];
     if (!report.classification || matches[i].truth < 0)

@@ -18,6 +18,7 @@
 
 #include "core/case.h"
 #include "core/method_result.h"
+#include "metrics/hole_matching.h"
 
 #include <cstddef>
 
@@ -37,6 +38,10 @@ struct ClassificationAccuracy {
 };
 
 ClassificationAccuracy classification_accuracy(const Case& c, const MethodResult& result);
+
+/// The same, with the reports' matches given (match_holes(c, result.holes)).
+ClassificationAccuracy classification_accuracy(const Case& c, const MethodResult& result,
+                                               const std::vector<HoleMatch>& matches);
 
 /// Whether `a` equals some rotation of `b` (two empty sequences are equal).
 template <typename T>

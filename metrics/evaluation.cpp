@@ -313,13 +313,15 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
 
 void add_feature_recovery(const Case& c, const MethodResult& result,
                           const EvaluationOptions& options, double diagonal,
-                          const embree::TriangleScene& complete_scene, Recorder& out) {
+                          const embree::TriangleScene& complete_scene,
+                          const std::vector<double>* input_corner_distances, Recorder& out) {
   FeatureRecoveryOptions feature_options;
   feature_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
   feature_options.edge_tolerance = options.edge_tolerance_rel_diag * diagonal;
   feature_options.edge_search_radius = options.edge_search_radius_rel_diag * diagonal;
   feature_options.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
-  const FeatureRecovery f = feature_recovery(c, result.repaired, complete_scene, feature_options);
+  const FeatureRecovery f =
+      feature_recovery(c, result.repaired, complete_scene, feature_options, input_corner_distances);
   if (!f.corner_errors.empty()) {
     double sum = 0.0, largest = 0.0;
     for (double e : f.corner_errors) {
@@ -364,12 +366,14 @@ bool valid_repair(const MethodResult& result, const Validity& v) {
 }
 
 void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
-                  double diagonal, const InputSelfIntersections* known_input, const KeptFaces* kept,
+                  double diagonal, const CaseEvaluation* shared, const KeptFaces* kept,
                   Recorder& out) {
+  const InputSelfIntersections* known_input = shared ? shared->input_self_intersections() : nullptr;
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
-  const Validity v = validity(c.input, result.repaired, validity_options, known_input, kept);
+  const Validity v = validity(c.input, result.repaired, validity_options, known_input, kept,
+                              shared ? &shared->input_topology() : nullptr);
   out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
   out.add_flag(kIsClosed, v.open_boundary_loops == 0);
   out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);
@@ -388,8 +392,9 @@ void add_validity(const Case& c, const MethodResult& result, const EvaluationOpt
     out.add_flag(kValidRepairOk, valid_repair(result, v));
 }
 
-void add_classification(const Case& c, const MethodResult& result, Recorder& out) {
-  const ClassificationAccuracy a = classification_accuracy(c, result);
+void add_classification(const Case& c, const MethodResult& result,
+                        const std::vector<HoleMatch>& matches, Recorder& out) {
+  const ClassificationAccuracy a = classification_accuracy(c, result, matches);
   if (a.compared == 0)
     return;
   out.add(kClassificationKCorrectFraction, fraction(a.k_correct, a.compared));
@@ -405,9 +410,9 @@ void add_classification(const Case& c, const MethodResult& result, Recorder& out
   out.add(kDecisionHandledFraction, fraction(a.decision_handled, a.compared));
 }
 
-void add_arrows(const Case& c, const MethodResult& result, const EvaluationOptions& options,
-                double diagonal, const embree::TriangleScene& complete_scene, Recorder& out) {
-  const auto matches = match_holes(c, result.holes);
+void add_arrows(const Case& c, const MethodResult& result, const std::vector<HoleMatch>& matches,
+                const EvaluationOptions& options, double diagonal,
+                const embree::TriangleScene& complete_scene, Recorder& out) {
   embree::ArrowVisibilityOptions arrow_options;
   arrow_options.field_of_view_degrees = options.arrow_field_of_view_degrees;
   arrow_options.sample_spacing = options.arrow_sample_spacing_rel_diag * diagonal;
@@ -465,6 +470,28 @@ void add_fallbacks(const MethodResult& result, Recorder& out) {
   out.add(kDefectHolesFraction, fraction(static_cast<std::size_t>(defects), result.holes.size()));
 }
 
+// The repair's scene: where it keeps every input face in the input's order, the case's scene
+// of the input and a scene of the rest (the patch), at the patch's cost; else its own. The
+// answers are the same either way (triangle_scene.h).
+std::unique_ptr<embree::TriangleScene> repaired_scene_of(const Mesh& repaired,
+                                                         const CaseEvaluation* shared,
+                                                         const KeptFaces* kept) {
+  const auto dropped = [](int face) { return face < 0; };
+  if (shared && kept && shared->input_scene() && kept->order_kept &&
+      std::none_of(kept->repaired_face_of_input.begin(), kept->repaired_face_of_input.end(),
+                   dropped)) {
+    std::vector<int> added;
+    for (std::size_t f = 0; f < kept->input_face_of_repaired.size(); ++f) {
+      if (kept->input_face_of_repaired[f] < 0)
+        added.push_back(static_cast<int>(f));
+    }
+    return std::make_unique<embree::TriangleScene>(*shared->input_scene(),
+                                                   kept->repaired_face_of_input,
+                                                   kept->input_face_of_repaired, repaired, added);
+  }
+  return std::make_unique<embree::TriangleScene>(repaired);
+}
+
 // The metrics, with what the case's jobs share given (`shared`) or made here.
 Evaluation evaluate_with(const Case& c, const MethodResult& result,
                          const EvaluationOptions& options, const CaseEvaluation* shared) {
@@ -491,7 +518,9 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     laps.lap(evaluation_phases::kKeptFaces);
   }
   if (result.repaired.n_faces() > 0) {
-    const embree::TriangleScene repaired_scene(result.repaired);
+    const auto repaired_scene_owner =
+        repaired_scene_of(result.repaired, shared, kept ? &*kept : nullptr);
+    const embree::TriangleScene& repaired_scene = *repaired_scene_owner;
     laps.lap(evaluation_phases::kRepairedScene);
     const RegionMeshes regions = add_distances(c, result, options, diagonal, complete_scene,
                                                repaired_scene, first, out, laps);
@@ -500,15 +529,21 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
                              out);
       laps.lap(evaluation_phases::kLiteratureMetrics);
     }
-    add_feature_recovery(c, result, options, diagonal, complete_scene, out);
+    // The input's corner distances stand for its vertices where the repair kept them all.
+    const bool corners_known = shared && kept && kept->input_vertices_kept;
+    add_feature_recovery(c, result, options, diagonal, complete_scene,
+                         corners_known ? &shared->input_corner_distances() : nullptr, out);
     laps.lap(evaluation_phases::kFeatureRecovery);
   }
-  add_validity(c, result, options, diagonal, shared ? shared->input_self_intersections() : nullptr,
-               kept ? &*kept : nullptr, out);
+  add_validity(c, result, options, diagonal, shared, kept ? &*kept : nullptr, out);
   laps.lap(evaluation_phases::kValidity);
-  add_classification(c, result, out);
+  // The reports' holes, matched once for the classification and the arrows.
+  const std::vector<HoleMatch> matches =
+      shared ? match_holes(c, result.holes, shared->input_loop_centroids())
+             : match_holes(c, result.holes);
+  add_classification(c, result, matches, out);
   laps.lap(evaluation_phases::kClassification);
-  add_arrows(c, result, options, diagonal, complete_scene, out);
+  add_arrows(c, result, matches, options, diagonal, complete_scene, out);
   laps.lap(evaluation_phases::kArrowVisibility);
   add_fallbacks(result, out);  // a count of the hole reports: no time worth a phase
   return evaluation;

@@ -30,19 +30,45 @@ struct Segment {
   Point a, b;
 };
 
+// The distance from `corner` to the nearest vertex of `mesh` from index `first` on.
+double nearest_vertex_distance(const Mesh& mesh, const Point& corner, std::size_t first) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = first; i < mesh.n_vertices(); ++i) {
+    const VertexHandle v(static_cast<int>(i));
+    if (!mesh.status(v).deleted())
+      best = std::min(best, (mesh.point(v) - corner).norm());
+  }
+  return best;
+}
+
 }  // namespace
+
+std::vector<double> input_corner_distances(const Case& c) {
+  std::vector<double> distances;
+  for (const auto& hole : c.holes) {
+    for (const Point& corner : hole.missing_corners)
+      distances.push_back(nearest_vertex_distance(c.input, corner, 0));
+  }
+  return distances;
+}
 
 FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
                                  const embree::TriangleScene& complete_scene,
-                                 const FeatureRecoveryOptions& options) {
+                                 const FeatureRecoveryOptions& options,
+                                 const std::vector<double>* input_corner_distances) {
   FeatureRecovery result;
 
+  // The input's vertices (where known) and the repair's own after them: the minimum is the
+  // same as over all the repair's vertices.
+  std::size_t corner = 0;
   for (const auto& hole : c.holes) {
-    for (const Point& corner : hole.missing_corners) {
-      double best = std::numeric_limits<double>::infinity();
-      for (auto v : repaired.vertices())
-        best = std::min(best, (repaired.point(v) - corner).norm());
-      result.corner_errors.push_back(best);
+    for (const Point& point : hole.missing_corners) {
+      result.corner_errors.push_back(
+          input_corner_distances
+              ? std::min((*input_corner_distances)[corner],
+                         nearest_vertex_distance(repaired, point, c.input.n_vertices()))
+              : nearest_vertex_distance(repaired, point, 0));
+      ++corner;
     }
   }
 

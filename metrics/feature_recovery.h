@@ -58,9 +58,17 @@ struct FeatureRecovery {
 };
 
 /// Feature recovery of `repaired` against the ground truth of `c`; `complete_scene` is an
-/// Embree scene of `c.complete`.
+/// Embree scene of `c.complete`. `input_corner_distances` (optional): where every input vertex
+/// is a vertex of the repair at its index (KeptFaces::input_vertices_kept), the distance from
+/// each missing corner (holes in order, corners in order) to the nearest input vertex
+/// (input_corner_distances()); the corners' errors then look at the repair's own vertices only.
 FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
                                  const embree::TriangleScene& complete_scene,
-                                 const FeatureRecoveryOptions& options);
+                                 const FeatureRecoveryOptions& options,
+                                 const std::vector<double>* input_corner_distances = nullptr);
+
+/// Per missing corner of `c` (holes in order, corners in order), the distance to the nearest
+/// vertex of the input: what every repair that keeps the input's vertices shares.
+std::vector<double> input_corner_distances(const Case& c);
 
 }  // namespace holebench

@@ -21,17 +21,25 @@ double distance_to_removed_faces(const Case& c, const HoleTruth& hole, const Poi
   return best;
 }
 
+std::vector<Point> input_loop_centroids(const Case& c) {
+  std::vector<Point> centroids;
+  for (const auto& loop : find_boundary_loops(c.input))
+    centroids.push_back(loop_centroid(c.input, loop));
+  return centroids;
+}
+
 std::vector<HoleMatch> match_holes(const Case& c, const std::vector<HoleReport>& reports) {
+  return match_holes(c, reports, input_loop_centroids(c));
+}
+
+std::vector<HoleMatch> match_holes(const Case& c, const std::vector<HoleReport>& reports,
+                                   const std::vector<Point>& centroids) {
   std::vector<HoleMatch> matches;
   // With one ground-truth hole per boundary loop of the input, holes[i] describes the i-th
   // loop (the generators' convention, docs/cases.md): a report is matched to the loop whose
   // centroid is nearest its own, which is exact for a method that reports its loop's centroid
   // and robust where several holes share removed faces' neighbourhoods.
-  const auto loops = find_boundary_loops(c.input);
-  if (loops.size() == c.holes.size() && loops.size() > 1) {
-    std::vector<Point> centroids;
-    for (const auto& loop : loops)
-      centroids.push_back(loop_centroid(c.input, loop));
+  if (centroids.size() == c.holes.size() && centroids.size() > 1) {
     for (const auto& report : reports) {
       HoleMatch match;
       double best = std::numeric_limits<double>::infinity();

@@ -25,6 +25,15 @@ struct HoleMatch {
 /// One match per report, in the order of `reports`.
 std::vector<HoleMatch> match_holes(const Case& c, const std::vector<HoleReport>& reports);
 
+/// The centroids of the input's boundary loops, in find_boundary_loops' order: what
+/// match_holes needs of the input, the same for every method (metrics/case_evaluation.h
+/// keeps them per case).
+std::vector<Point> input_loop_centroids(const Case& c);
+
+/// match_holes with the input's loop centroids given (input_loop_centroids(c)).
+std::vector<HoleMatch> match_holes(const Case& c, const std::vector<HoleReport>& reports,
+                                   const std::vector<Point>& loop_centroids);
+
 /// The distance from `p` to the nearest removed face of `hole` (infinity if it has none).
 double distance_to_removed_faces(const Case& c, const HoleTruth& hole, const Point& p);
 

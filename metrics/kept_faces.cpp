@@ -21,14 +21,7 @@ struct IndexTripleHash {
 };
 
 IndexTriple index_triple(const Mesh& mesh, FaceHandle f) {
-  IndexTriple t{-1, -1, -1};
-  int k = 0;
-  for (auto v : mesh.fv_range(f)) {
-    if (k < 3)
-      t[k] = v.idx();
-    ++k;
-  }
-  return t;
+  return triangle_vertex_indices(mesh, f);
 }
 
 }  // namespace
@@ -44,41 +37,56 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
     const VertexHandle v(static_cast<int>(i));
     same_vertex[i] = !repaired.status(v).deleted() && repaired.point(v) == input.point(v);
   }
+  kept.input_vertices_kept =
+      common == input.n_vertices() &&
+      std::all_of(same_vertex.begin(), same_vertex.end(), [](char same) { return same != 0; });
   const auto on_same_vertices = [&](const IndexTriple& t) {
     return std::all_of(t.begin(), t.end(), [&](int i) {
       return i >= 0 && static_cast<std::size_t>(i) < common && same_vertex[i];
     });
   };
-  // Most repairs keep the input's faces at their indices: a repaired face is looked up at its
-  // own index first, and in a table of the input's faces only when it is not there. The two
-  // agree: the input has one face per triple (a mesh has one face per oriented corner), so
-  // the table would name the same face.
-  std::unordered_map<IndexTriple, int, IndexTripleHash> input_face_of;
-  bool table_built = false;
-  const auto input_face_with = [&](const IndexTriple& t, int index) {
-    if (static_cast<std::size_t>(index) < input.n_faces() &&
-        !input.status(input.face_handle(index)).deleted() &&
-        index_triple(input, input.face_handle(index)) == t && on_same_vertices(t))
-      return index;
-    if (!table_built) {
-      input_face_of.reserve(input.n_faces());
-      for (auto f : input.faces()) {
-        const IndexTriple triple = index_triple(input, f);
-        if (on_same_vertices(triple))
-          input_face_of.emplace(triple, f.idx());
-      }
-      table_built = true;
-    }
-    const auto it = input_face_of.find(t);
-    return it == input_face_of.end() ? -1 : it->second;
-  };
-  int last_input_face = -1;
+  // Most repairs keep the input's faces at their indices: each repaired face is looked up
+  // at its own index first. Only where input faces are left unmatched is a table of those
+  // built for the rest (a mesh has one face per oriented corner, so a triple names at most one
+  // face of each mesh: the order of the lookups changes no match). A repair that keeps every
+  // input face at its index costs one pass, whatever its new faces.
+  std::vector<int> unmatched_lookups;  // repaired faces not kept at their own index
+  std::size_t matched = 0;
   for (auto f : repaired.faces()) {
-    const int g = input_face_with(index_triple(repaired, f), f.idx());
-    if (g < 0 || kept.repaired_face_of_input[g] >= 0)
+    const int index = f.idx();
+    if (static_cast<std::size_t>(index) < input.n_faces()) {
+      const FaceHandle g = input.face_handle(index);
+      const IndexTriple t = index_triple(repaired, f);
+      if (!input.status(g).deleted() && index_triple(input, g) == t && on_same_vertices(t)) {
+        kept.repaired_face_of_input[index] = index;
+        kept.input_face_of_repaired[index] = index;
+        ++matched;
+        continue;
+      }
+    }
+    unmatched_lookups.push_back(index);
+  }
+  if (matched < input.n_faces() && !unmatched_lookups.empty()) {
+    std::unordered_map<IndexTriple, int, IndexTripleHash> input_face_of;
+    for (auto f : input.faces()) {
+      if (kept.repaired_face_of_input[f.idx()] >= 0)
+        continue;
+      const IndexTriple triple = index_triple(input, f);
+      if (on_same_vertices(triple))
+        input_face_of.emplace(triple, f.idx());
+    }
+    for (int index : unmatched_lookups) {
+      const auto it = input_face_of.find(index_triple(repaired, repaired.face_handle(index)));
+      if (it == input_face_of.end() || kept.repaired_face_of_input[it->second] >= 0)
+        continue;
+      kept.repaired_face_of_input[it->second] = index;
+      kept.input_face_of_repaired[index] = it->second;
+    }
+  }
+  int last_input_face = -1;
+  for (int g : kept.input_face_of_repaired) {
+    if (g < 0)
       continue;
-    kept.repaired_face_of_input[g] = f.idx();
-    kept.input_face_of_repaired[f.idx()] = g;
     kept.order_kept = kept.order_kept && g > last_input_face;
     last_input_face = g;
   }

@@ -19,6 +19,9 @@ struct KeptFaces {
   /// The kept faces are in the input's order (a later input face has a later repaired face),
   /// so that "the smallest face index" picks the same face in both meshes.
   bool order_kept = true;
+  /// Every input vertex is a vertex of the repair at its index with its point, bit for bit
+  /// (what the repair adds are vertices after the input's).
+  bool input_vertices_kept = false;
 };
 
 KeptFaces kept_faces(const Mesh& input, const Mesh& repaired);

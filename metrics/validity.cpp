@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -140,16 +141,24 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
 }
 
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
-                  const InputSelfIntersections* known_input, const KeptFaces* kept_of_input) {
+                  const InputSelfIntersections* known_input, const KeptFaces* kept_of_input,
+                  const InputTopology* topology) {
   Validity result;
-  result.open_boundary_loops = find_boundary_loops(repaired).size();
-
-  for (auto v : repaired.vertices()) {
-    if (!repaired.is_manifold(v))
-      ++result.non_manifold_vertices;
+  std::optional<TopologyCounts> counts;
+  if (topology && kept_of_input)
+    counts = topology_from_input(input, repaired, *topology, *kept_of_input);
+  if (counts) {
+    result.open_boundary_loops = counts->open_boundary_loops;
+    result.non_manifold_vertices = counts->non_manifold_vertices;
+    result.orientation_conflicts = counts->orientation_conflicts;
+  } else {
+    result.open_boundary_loops = find_boundary_loops(repaired).size();
+    for (auto v : repaired.vertices()) {
+      if (!repaired.is_manifold(v))
+        ++result.non_manifold_vertices;
+    }
+    result.orientation_conflicts = orientation_conflicts(repaired);
   }
-
-  result.orientation_conflicts = orientation_conflicts(repaired);
 
   if (options.self_intersections) {
     cgal::SelfIntersections pairs;
@@ -181,10 +190,12 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   // the same order); the others are looked up among the repaired faces by their points.
   std::vector<int> not_kept;
   for (auto f : input.faces()) {
+    if (kept_of_input && kept_of_input->repaired_face_of_input[f.idx()] >= 0)
+      continue;
     bool near_hole = false;
     for (auto v : input.fv_range(f))
       near_hole = near_hole || input.is_boundary(v);
-    if (!near_hole && !(kept_of_input && kept_of_input->repaired_face_of_input[f.idx()] >= 0))
+    if (!near_hole)
       not_kept.push_back(f.idx());
   }
   if (!not_kept.empty()) {

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "metrics/input_topology.h"
 #include "metrics/kept_faces.h"
 
 #include <cstddef>
@@ -70,9 +71,13 @@ InputSelfIntersections input_self_intersections(const Mesh& input);
 /// test of the faces that are not the input's and of the input's faces in their bounding box
 /// (self_intersections_from_input): the same counts as the test of the whole repaired mesh.
 /// `kept_of_input` (optional): kept_faces(input, repaired), where the caller has it.
+/// `topology` (optional, with `kept_of_input`): input_topology(input), where the caller keeps
+/// it; the open loops, non-manifold vertices and orientation conflicts are then counted at the
+/// repair's changes (input_topology.h): the same counts.
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {},
                   const InputSelfIntersections* known_input = nullptr,
-                  const KeptFaces* kept_of_input = nullptr);
+                  const KeptFaces* kept_of_input = nullptr,
+                  const InputTopology* topology = nullptr);
 
 /// The self-intersections of `repaired` from the input's own pairs. The faces of `repaired`
 /// that are the input's (kept_faces.h; a rotated face is not kept, only tested again): two

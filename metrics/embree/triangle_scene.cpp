@@ -196,6 +196,20 @@ TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces, Sc
   }
 }
 
+TriangleScene::TriangleScene(const TriangleScene& base, const std::vector<int>& face_of_base_face,
+                             const std::vector<int>& base_face_of_face, const Mesh& mesh,
+                             const std::vector<int>& added, SceneBuild build)
+    : base_(&base),
+      face_of_base_face_(&face_of_base_face),
+      base_face_of_face_(&base_face_of_face),
+      added_(added.empty() ? nullptr : std::make_unique<TriangleScene>(mesh, added, build)) {}
+
+std::size_t TriangleScene::triangle_count() const {
+  if (base_)
+    return base_->triangle_count() + (added_ ? added_->triangle_count() : 0);
+  return triangles_.size();
+}
+
 TriangleScene::~TriangleScene() {
   if (scene_)
     rtcReleaseScene(scene_);
@@ -208,6 +222,20 @@ ClosestPoint TriangleScene::closest_point(const Point& p) const {
 }
 
 ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_bound) const {
+  if (base_) {
+    // Each part's nearest, in `mesh`'s face indices; the nearer wins, the smaller face index
+    // among equals, as in a scene of the whole mesh.
+    ClosestPoint from_base = base_->closest_point(p, distance_upper_bound);
+    if (from_base.face >= 0)
+      from_base.face = (*face_of_base_face_)[from_base.face];
+    if (!added_)
+      return from_base;
+    const ClosestPoint from_added = added_->closest_point(p, distance_upper_bound);
+    const bool added_wins =
+        from_added.distance < from_base.distance ||
+        (from_added.distance == from_base.distance && from_added.face < from_base.face);
+    return added_wins ? from_added : from_base;
+  }
   PointQueryState state;
   state.triangles = &triangles_;
   state.query = p;
@@ -244,6 +272,21 @@ ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_
 
 std::optional<std::vector<int>> TriangleScene::faces_within(const Point& p, double radius,
                                                             std::size_t max_faces) const {
+  if (base_) {
+    auto faces = base_->faces_within(p, radius, max_faces);
+    if (!faces)
+      return std::nullopt;
+    for (int& face : *faces)
+      face = (*face_of_base_face_)[face];
+    if (!added_)
+      return faces;
+    const auto more = added_->faces_within(p, radius, max_faces);
+    if (!more || faces->size() + more->size() > max_faces)
+      return std::nullopt;
+    faces->insert(faces->end(), more->begin(), more->end());
+    std::sort(faces->begin(), faces->end());
+    return faces;
+  }
   RadiusQueryState state;
   state.max_primitives = max_faces;
   state.triangles = &triangles_;
@@ -278,6 +321,17 @@ std::vector<int> TriangleScene::faces_within(const Point& p, double radius) cons
 
 RayHit TriangleScene::intersect(const Point& origin, const Point& direction, double t_near,
                                 double t_far) const {
+  if (base_) {
+    RayHit from_base = base_->intersect(origin, direction, t_near, t_far);
+    if (from_base.hit)
+      from_base.face = (*face_of_base_face_)[from_base.face];
+    if (!added_)
+      return from_base;
+    const RayHit from_added = added_->intersect(origin, direction, t_near, t_far);
+    const bool added_wins =
+        from_added.hit && (!from_base.hit || from_added.distance < from_base.distance);
+    return added_wins ? from_added : from_base;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit ray_hit{};
@@ -299,6 +353,12 @@ RayHit TriangleScene::intersect(const Point& origin, const Point& direction, dou
 
 void TriangleScene::intersect_coherent(const Point& origin, const std::vector<Point>& directions,
                                        std::vector<RayHit>& hits) const {
+  if (base_) {  // ray by ray through intersect(), which asks both parts
+    hits.resize(directions.size());
+    for (std::size_t i = 0; i < directions.size(); ++i)
+      hits[i] = intersect(origin, directions[i]);
+    return;
+  }
   std::vector<RTCRayHit> stream(directions.size());
   for (std::size_t i = 0; i < directions.size(); ++i) {
     stream[i].ray = make_ray(origin, directions[i], 0.0, std::numeric_limits<double>::infinity());
@@ -325,6 +385,10 @@ void TriangleScene::intersect_coherent(const Point& origin, const std::vector<Po
 
 bool TriangleScene::occluded(const Point& origin, const Point& direction, double t_near,
                              double t_far) const {
+  if (base_) {
+    return base_->occluded(origin, direction, t_near, t_far) ||
+           (added_ && added_->occluded(origin, direction, t_near, t_far));
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray = make_ray(origin, direction, t_near, t_far);
@@ -334,6 +398,12 @@ bool TriangleScene::occluded(const Point& origin, const Point& direction, double
 }
 
 const std::array<Point, 3>& TriangleScene::triangle_of_face(int face) const {
+  if (base_) {
+    const int base_face = base_face_of_face_->at(face);
+    if (base_face >= 0 || !added_)
+      return base_->triangle_of_face(base_face);
+    return added_->triangle_of_face(face);
+  }
   return triangles_.at(primitive_of_face_.at(face));
 }
 

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -46,6 +47,18 @@ class TriangleScene {
   /// the mesh's face indices).
   TriangleScene(const Mesh& mesh, const std::vector<int>& faces,
                 SceneBuild build = SceneBuild::fast_queries);
+  /// A scene of `mesh` made of a scene `base` of another mesh whose faces `mesh` has too, and
+  /// a scene of `mesh`'s other faces (`added`, face indices of `mesh`): a repair's scene from
+  /// its input's (built once per case) and its patch's, at the cost of the patch. Every face
+  /// of `base` must be in `mesh` (`face_of_base_face`: by base face, the face of `mesh` with
+  /// the same triangle, corner for corner; `base_face_of_face`: the other way, or -1), in the
+  /// same order (a later base face is a later face), and `added` must be every other face of
+  /// `mesh`. Then every answer is the one a scene of the whole `mesh` gives: the same nearest
+  /// triangle (the smallest face index among equals), the same faces within a radius. `base`
+  /// and the two maps must outlive the scene.
+  TriangleScene(const TriangleScene& base, const std::vector<int>& face_of_base_face,
+                const std::vector<int>& base_face_of_face, const Mesh& mesh,
+                const std::vector<int>& added, SceneBuild build = SceneBuild::fast_queries);
   ~TriangleScene();
   TriangleScene(const TriangleScene&) = delete;
   TriangleScene& operator=(const TriangleScene&) = delete;
@@ -85,7 +98,7 @@ class TriangleScene {
   /// The triangle of `face` (the mesh's face index) as three points.
   const std::array<Point, 3>& triangle_of_face(int face) const;
 
-  std::size_t triangle_count() const { return triangles_.size(); }
+  std::size_t triangle_count() const;
 
  private:
   RTCDeviceTy* device_ = nullptr;
@@ -93,6 +106,12 @@ class TriangleScene {
   std::vector<std::array<Point, 3>> triangles_;  // by Embree primitive id
   std::vector<int> face_of_primitive_;
   std::vector<int> primitive_of_face_;
+  // A scene made of a base scene and an added one (the constructor from a base): queries
+  // ask both and answer with `mesh`'s face indices.
+  const TriangleScene* base_ = nullptr;
+  const std::vector<int>* face_of_base_face_ = nullptr;
+  const std::vector<int>* base_face_of_face_ = nullptr;
+  std::unique_ptr<TriangleScene> added_;
 };
 
 }  // namespace holebench::embree

@@ -1,5 +1,7 @@
 // What the evaluations of a case share (CaseEvaluation) changes no number: the metrics of a
-// repair evaluated with it equal, bit for bit, those evaluated without it.
+// repair evaluated with it equal, bit for bit, those evaluated without it, whether the repair
+// keeps every input face (its scene then made from the input's), drops one, moves a vertex or
+// leaves holes open (its topology then counted at its changes).
 #include "metrics/case_evaluation.h"
 
 #include "core/boundary_loops.h"
@@ -25,6 +27,30 @@ Mesh fan_closing(const Mesh& input) {
   return repaired;
 }
 
+// The input with one face at a hole's boundary removed (the faces after it move down one
+// index), then every hole closed by a fan: a repair that drops an input face.
+Mesh drop_and_fan(const Mesh& input) {
+  Mesh dropped = input;
+  dropped.request_face_status();
+  dropped.request_edge_status();
+  dropped.request_vertex_status();
+  const auto loop = find_boundary_loops(dropped).front();
+  const HalfedgeHandle inside = dropped.opposite_halfedge_handle(loop.halfedges.front());
+  dropped.delete_face(dropped.face_handle(inside), false);
+  dropped.garbage_collection();
+  return fan_closing(dropped);
+}
+
+// The input with only its first hole closed by a fan.
+Mesh first_hole_closed(const Mesh& input) {
+  Mesh repaired = input;
+  const auto loops = find_boundary_loops(input);
+  const auto v = loop_vertices(input, loops.front());
+  for (std::size_t i = 1; i + 1 < v.size(); ++i)
+    repaired.add_face(v[0], v[i], v[i + 1]);
+  return repaired;
+}
+
 // The complete model with the removed faces new: an exact closing.
 Mesh exact_closing(const Case& c) {
   Mesh repaired = c.complete;
@@ -45,7 +71,10 @@ void expect_same_metrics(const Evaluation& alone, const Evaluation& shared,
 }
 
 TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
-  for (const char* id : {"box/corner", "brep/k3/inner/convex-convex-convex/small"}) {
+  // A corner (missing corners), a B-Rep pocket, several loops, a crease (missing edges).
+  for (const char* id :
+       {"box/corner", "brep/k3/inner/convex-convex-convex/small",
+        "brep/weak/multiple-inner-boundaries/small", "solid/l_block/edge_convex/small"}) {
     for (double noise : {0.0, 25.0}) {
       const Case c = generators::make_case(id, 0, noise);
       const EvaluationOptions options;
@@ -79,6 +108,14 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       open.repaired = c.input;
       expect_same_metrics(evaluate(c, open, options), evaluate(c, open, options, shared),
                           what + " open");
+      MethodResult dropped;  // an input face dropped: counted at the changes all the same
+      dropped.repaired = drop_and_fan(c.input);
+      expect_same_metrics(evaluate(c, dropped, options), evaluate(c, dropped, options, shared),
+                          what + " dropped");
+      MethodResult partial;  // holes left open beside a closed one
+      partial.repaired = first_hole_closed(c.input);
+      expect_same_metrics(evaluate(c, partial, options), evaluate(c, partial, options, shared),
+                          what + " partial");
       MethodResult nothing;  // an empty repair: no distance, the same validity
       expect_same_metrics(evaluate(c, nothing, options), evaluate(c, nothing, options, shared),
                           what + " empty");
