@@ -1,6 +1,7 @@
 #include "metrics/case_evaluation.h"
 
 #include "core/geometry.h"
+#include "core/region_segmentation.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/feature_recovery.h"
 #include "metrics/hole_matching.h"
@@ -29,6 +30,8 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
   input_topology_ = holebench::input_topology(c.input);
   input_loop_centroids_ = holebench::input_loop_centroids(c);
   input_corner_distances_ = holebench::input_corner_distances(c);
+  input_face_regions_ =
+      segment_regions(c.input, FeatureRecoveryOptions{}.features.segmentation).face_region;
 }
 
 CaseEvaluation::~CaseEvaluation() = default;

@@ -56,6 +56,9 @@ class CaseEvaluation {
   const InputTopology& input_topology() const { return input_topology_; }
   /// The centroids of the input's boundary loops (hole_matching.h).
   const std::vector<Point>& input_loop_centroids() const { return input_loop_centroids_; }
+  /// The input's regions by face (segment_regions with the feature recovery's options), for
+  /// the repair's sharp edges near the missing ones (feature_recovery.h).
+  const std::vector<int>& input_face_regions() const { return input_face_regions_; }
   /// Per missing corner, the distance to the nearest input vertex (feature_recovery.h).
   const std::vector<double>& input_corner_distances() const { return input_corner_distances_; }
 
@@ -69,6 +72,7 @@ class CaseEvaluation {
   InputTopology input_topology_;
   std::vector<Point> input_loop_centroids_;
   std::vector<double> input_corner_distances_;
+  std::vector<int> input_face_regions_;
 };
 
 /// evaluate() with what the case's evaluations share; `shared` must have been built from the

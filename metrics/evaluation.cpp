@@ -314,14 +314,14 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
 void add_feature_recovery(const Case& c, const MethodResult& result,
                           const EvaluationOptions& options, double diagonal,
                           const embree::TriangleScene& complete_scene,
-                          const std::vector<double>* input_corner_distances, Recorder& out) {
+                          const FeatureRecoveryShortcuts& shortcuts, Recorder& out) {
   FeatureRecoveryOptions feature_options;
   feature_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
   feature_options.edge_tolerance = options.edge_tolerance_rel_diag * diagonal;
   feature_options.edge_search_radius = options.edge_search_radius_rel_diag * diagonal;
   feature_options.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
   const FeatureRecovery f =
-      feature_recovery(c, result.repaired, complete_scene, feature_options, input_corner_distances);
+      feature_recovery(c, result.repaired, complete_scene, feature_options, shortcuts);
   if (!f.corner_errors.empty()) {
     double sum = 0.0, largest = 0.0;
     for (double e : f.corner_errors) {
@@ -529,10 +529,16 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
                              out);
       laps.lap(evaluation_phases::kLiteratureMetrics);
     }
-    // The input's corner distances stand for its vertices where the repair kept them all.
-    const bool corners_known = shared && kept && kept->input_vertices_kept;
-    add_feature_recovery(c, result, options, diagonal, complete_scene,
-                         corners_known ? &shared->input_corner_distances() : nullptr, out);
+    // What the case knows of the input, where the repair kept it (feature_recovery.h).
+    FeatureRecoveryShortcuts shortcuts;
+    if (shared && kept) {
+      if (kept->input_vertices_kept)
+        shortcuts.input_corner_distances = &shared->input_corner_distances();
+      shortcuts.input_face_regions = &shared->input_face_regions();
+      shortcuts.kept = &*kept;
+      shortcuts.repaired_scene = &repaired_scene;
+    }
+    add_feature_recovery(c, result, options, diagonal, complete_scene, shortcuts, out);
     laps.lap(evaluation_phases::kFeatureRecovery);
   }
   add_validity(c, result, options, diagonal, shared, kept ? &*kept : nullptr, out);

@@ -3,10 +3,13 @@
 #include "core/distances.h"
 #include "core/geometry.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/growing_box.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <unordered_map>
 
 namespace holebench {
 namespace {
@@ -41,6 +44,144 @@ double nearest_vertex_distance(const Mesh& mesh, const Point& corner, std::size_
   return best;
 }
 
+// The box of a polyline grown by `margin` on every side.
+GrowingBox polyline_box(const std::vector<Point>& polyline, double margin) {
+  GrowingBox box;
+  for (const Point& p : polyline)
+    box.add(p);
+  const Point grow(margin, margin, margin);
+  box.lo -= grow;
+  box.hi += grow;
+  return box;
+}
+
+bool segment_meets(const GrowingBox& box, const Point& a, const Point& b) {
+  Point lo = a, hi = a;
+  lo.minimize(b);
+  hi.maximize(b);
+  bool overlaps = true;
+  for (int k = 0; k < 3; ++k)
+    overlaps = overlaps && lo[k] <= box.hi[k] && hi[k] >= box.lo[k];
+  return overlaps;
+}
+
+// The repaired mesh's sharp edges, as segments, from its whole feature analysis.
+class WholeMeshSharpEdges {
+ public:
+  WholeMeshSharpEdges(const Mesh& repaired, const FeatureOptions& options) {
+    const FeatureAnalysis analysis = analyse_features(repaired, options);
+    for (auto e : repaired.edges()) {
+      if (analysis.edge_is_sharp[e.idx()])
+        sharp_.push_back({repaired.point(e.v0()), repaired.point(e.v1())});
+    }
+  }
+  std::vector<Segment> meeting(const GrowingBox& box) const {
+    std::vector<Segment> near;
+    for (const auto& s : sharp_) {
+      if (segment_meets(box, s.a, s.b))
+        near.push_back(s);
+    }
+    return near;
+  }
+
+ private:
+  std::vector<Segment> sharp_;
+};
+
+// The repaired mesh's sharp edges near a box, from the input's regions: segment_regions makes
+// an edge sharp where its two faces lie in different regions, regions being the faces joined
+// across edges whose dihedral angle is at most the threshold. With every input face kept, the
+// repair's regions are the input's joined across the edges of its other faces (kept-kept
+// edges are the input's, with the same faces and angle), so a union-find over the input's
+// regions and the other faces, built from those faces' edges, names each face's region.
+class SharpEdgesFromInput {
+ public:
+  SharpEdgesFromInput(const Mesh& repaired, const FeatureOptions& options,
+                      const FeatureRecoveryShortcuts& known)
+      : repaired_(repaired), known_(known) {
+    const double threshold = options.segmentation.sharp_angle_degrees * M_PI / 180.0;
+    for (std::size_t f = 0; f < known.kept->input_face_of_repaired.size(); ++f) {
+      const FaceHandle face(static_cast<int>(f));
+      if (known.kept->input_face_of_repaired[f] >= 0 || repaired.status(face).deleted())
+        continue;
+      for (auto h : repaired.fh_range(face)) {
+        const EdgeHandle e = repaired.edge_handle(h);
+        if (repaired.is_boundary(e) || std::abs(signed_dihedral_angle(repaired, e)) > threshold)
+          continue;
+        join(node(face), node(repaired.face_handle(repaired.opposite_halfedge_handle(h))));
+      }
+    }
+  }
+
+  std::vector<Segment> meeting(const GrowingBox& box) const {
+    std::vector<Segment> near;
+    const Point centre = (box.lo + box.hi) * 0.5;
+    const double radius = 0.5 * (box.hi - box.lo).norm() * (1.0 + 1e-9);
+    std::vector<int> edges;
+    for (int f : known_.repaired_scene->faces_within(centre, radius)) {
+      if (repaired_.status(FaceHandle(f)).deleted())
+        continue;
+      for (auto h : repaired_.fh_range(FaceHandle(f)))
+        edges.push_back(repaired_.edge_handle(h).idx());
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (int index : edges) {
+      const EdgeHandle e(index);
+      if (repaired_.status(e).deleted() || repaired_.is_boundary(e))
+        continue;
+      const HalfedgeHandle h = repaired_.halfedge_handle(e, 0);
+      const FaceHandle f0 = repaired_.face_handle(h);
+      const FaceHandle f1 = repaired_.face_handle(repaired_.opposite_halfedge_handle(h));
+      if (root(node(f0)) == root(node(f1)))
+        continue;
+      const auto smart = OpenMesh::make_smart(e, &repaired_);  // the whole analysis's ends
+      const Point a = repaired_.point(smart.v0());
+      const Point b = repaired_.point(smart.v1());
+      if (segment_meets(box, a, b))
+        near.push_back({a, b});
+    }
+    return near;
+  }
+
+ private:
+  // A kept face's node is its input face's region; another face's, its own (offset past
+  // every region id).
+  long node(FaceHandle f) const {
+    const int input_face = known_.kept->input_face_of_repaired[f.idx()];
+    if (input_face >= 0)
+      return (*known_.input_face_regions)[input_face];
+    return static_cast<long>(known_.input_face_regions->size()) + f.idx();
+  }
+  long root(long n) const {
+    auto it = parent_.find(n);
+    while (it != parent_.end() && it->second != n) {
+      n = it->second;
+      it = parent_.find(n);
+    }
+    return n;
+  }
+  void join(long a, long b) {
+    a = root(a);
+    b = root(b);
+    if (a != b)
+      parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+  const Mesh& repaired_;
+  const FeatureRecoveryShortcuts& known_;
+  std::unordered_map<long, long> parent_;  // nodes not in it are their own roots
+};
+
+// Whether the shortcut to the sharp edges holds: every input face kept, a scene, regions.
+bool sharp_edges_from_input(const FeatureOptions& options, const FeatureRecoveryShortcuts& known) {
+  if (options.regions_from_mesh || !known.input_face_regions || !known.kept ||
+      !known.repaired_scene)
+    return false;
+  const auto& kept = known.kept->repaired_face_of_input;
+  return std::none_of(kept.begin(), kept.end(), [](int f) { return f < 0; });
+}
+
 }  // namespace
 
 std::vector<double> input_corner_distances(const Case& c) {
@@ -55,7 +196,8 @@ std::vector<double> input_corner_distances(const Case& c) {
 FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
                                  const embree::TriangleScene& complete_scene,
                                  const FeatureRecoveryOptions& options,
-                                 const std::vector<double>* input_corner_distances) {
+                                 const FeatureRecoveryShortcuts& shortcuts) {
+  const std::vector<double>* input_corner_distances = shortcuts.input_corner_distances;
   FeatureRecovery result;
 
   // The input's vertices (where known) and the repair's own after them: the minimum is the
@@ -76,36 +218,20 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
   for (const auto& hole : c.holes)
     any_missing_edge = any_missing_edge || !hole.missing_edges.empty();
   if (any_missing_edge) {
-    const FeatureAnalysis analysis = analyse_features(repaired, options.features);
-    std::vector<Segment> sharp;
-    for (auto e : repaired.edges()) {
-      if (analysis.edge_is_sharp[e.idx()])
-        sharp.push_back({repaired.point(e.v0()), repaired.point(e.v1())});
-    }
+    std::optional<WholeMeshSharpEdges> whole;
+    std::optional<SharpEdgesFromInput> from_input;
+    if (sharp_edges_from_input(options.features, shortcuts))
+      from_input.emplace(repaired, options.features, shortcuts);
+    else
+      whole.emplace(repaired, options.features);
     for (const auto& hole : c.holes) {
       for (const auto& polyline : hole.missing_edges) {
         MissingEdgeRecovery edge;
         const auto samples = sample_polyline(polyline, options.edge_sample_spacing);
         // Only sharp edges that can be within the search radius of the polyline.
-        BoundingBox box{polyline.front(), polyline.front()};
-        for (const Point& p : polyline) {
-          box.min.minimize(p);
-          box.max.maximize(p);
-        }
-        const Point margin(options.edge_search_radius, options.edge_search_radius,
-                           options.edge_search_radius);
-        std::vector<Segment> near;
-        for (const auto& s : sharp) {
-          Point lo = s.a, hi = s.a;
-          lo.minimize(s.b);
-          hi.maximize(s.b);
-          bool overlaps = true;
-          for (int k = 0; k < 3; ++k)
-            overlaps =
-                overlaps && lo[k] <= box.max[k] + margin[k] && hi[k] >= box.min[k] - margin[k];
-          if (overlaps)
-            near.push_back(s);
-        }
+        const GrowingBox box = polyline_box(polyline, options.edge_search_radius);
+        const std::vector<Segment> near =
+            from_input ? from_input->meeting(box) : whole->meeting(box);
         std::size_t covered = 0;
         bool all_near = !samples.empty();
         double farthest = 0.0;

@@ -25,6 +25,7 @@
 #include "core/case.h"
 #include "core/features.h"
 #include "core/mesh.h"
+#include "metrics/kept_faces.h"
 #include "metrics/normal_cone.h"
 
 #include <optional>
@@ -57,15 +58,30 @@ struct FeatureRecovery {
   std::optional<double> normal_deviation_max_deg;
 };
 
+/// What feature_recovery can take from the case instead of reading the whole repaired mesh
+/// (metrics/case_evaluation.h keeps them); the numbers are the same.
+struct FeatureRecoveryShortcuts {
+  /// Where every input vertex is a vertex of the repair at its index
+  /// (KeptFaces::input_vertices_kept): input_corner_distances(c). The corners' errors then
+  /// look at the repair's own vertices only.
+  const std::vector<double>* input_corner_distances = nullptr;
+  /// Where the repair keeps every input face (kept_faces.h, none dropped) and the sharp edges
+  /// come from segment_regions (not regions_from_mesh): the input's regions by input face
+  /// (segment_regions(c.input, features.segmentation)), the kept faces and a scene of the
+  /// repair. The repair's regions are then the input's joined across its new faces' smooth
+  /// edges, and the sharp edges near each missing edge are found through the scene, at the
+  /// patch's cost rather than the model's.
+  const std::vector<int>* input_face_regions = nullptr;
+  const KeptFaces* kept = nullptr;
+  const embree::TriangleScene* repaired_scene = nullptr;
+};
+
 /// Feature recovery of `repaired` against the ground truth of `c`; `complete_scene` is an
-/// Embree scene of `c.complete`. `input_corner_distances` (optional): where every input vertex
-/// is a vertex of the repair at its index (KeptFaces::input_vertices_kept), the distance from
-/// each missing corner (holes in order, corners in order) to the nearest input vertex
-/// (input_corner_distances()); the corners' errors then look at the repair's own vertices only.
+/// Embree scene of `c.complete`.
 FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
                                  const embree::TriangleScene& complete_scene,
                                  const FeatureRecoveryOptions& options,
-                                 const std::vector<double>* input_corner_distances = nullptr);
+                                 const FeatureRecoveryShortcuts& shortcuts = {});
 
 /// Per missing corner of `c` (holes in order, corners in order), the distance to the nearest
 /// vertex of the input: what every repair that keeps the input's vertices shares.
