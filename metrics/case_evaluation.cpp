@@ -15,6 +15,7 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
     const MeanDistanceOptions mean = whole_model_distance_options(options, diagonal).mean;
     // One first pass of the input against the complete model for both of its tables.
     const FirstPass input_pass = first_pass(c.input, c.complete, *complete_scene_);
+    shared_faces_of_input_ = std::make_unique<SharedFacesOfInput>(c.input, c.complete);
     input_cell_bounds_ =
         std::make_unique<MeanCellBounds>(c.input, *complete_scene_, input_pass, mean);
     input_hausdorff_bounds_ =

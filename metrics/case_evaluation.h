@@ -40,6 +40,9 @@ class CaseEvaluation {
   const embree::TriangleScene* complete_scene() const { return complete_scene_.get(); }
   /// The input's scene, or nullptr where the case has no complete model or no input faces.
   const embree::TriangleScene* input_scene() const { return input_scene_.get(); }
+  /// The faces the input shares with the complete model, and what matching a repair's own
+  /// faces needs (shared_faces.h), or nullptr where the case has no complete model.
+  const SharedFacesOfInput* shared_faces_of_input() const { return shared_faces_of_input_.get(); }
   /// The input's faces' first bounds against the complete model, or nullptr.
   const MeanCellBounds* input_cell_bounds() const { return input_cell_bounds_.get(); }
   /// The complete model's faces' first bounds against the input, or nullptr.
@@ -65,6 +68,7 @@ class CaseEvaluation {
  private:
   std::unique_ptr<embree::TriangleScene> complete_scene_;
   std::unique_ptr<embree::TriangleScene> input_scene_;
+  std::unique_ptr<SharedFacesOfInput> shared_faces_of_input_;
   std::unique_ptr<MeanCellBounds> input_cell_bounds_;
   std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
   std::unique_ptr<HausdorffCellBounds> input_hausdorff_bounds_;

@@ -94,6 +94,9 @@ void add_interval(Recorder& out, const IntervalNames& names, const DistanceInter
 struct SharedFirstBounds {
   FirstBounds repaired_to_complete;
   FirstBounds complete_to_repaired;
+  /// The faces the repair shares with the complete model, from the input's
+  /// (SharedFacesOfInput), where the repair keeps the input so.
+  std::optional<SharedFaces> repaired_shared_faces;
 };
 SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
                                       const CaseEvaluation* shared, const KeptFaces* kept) {
@@ -108,6 +111,9 @@ SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
     first.complete_to_repaired.change.b_face_of_b0 = &kept->repaired_face_of_input;
     first.complete_to_repaired.change.changed = changed_faces_box(c.input, result.repaired, *kept);
   }
+  if (kept && shared->shared_faces_of_input())
+    first.repaired_shared_faces =
+        shared->shared_faces_of_input()->of_repair(result.repaired, *kept);
   return first;
 }
 
@@ -218,8 +224,8 @@ struct RegionMeshes {
 RegionMeshes add_distances(const Case& c, const MethodResult& result,
                            const EvaluationOptions& options, double diagonal,
                            const embree::TriangleScene& complete_scene,
-                           const embree::TriangleScene& repaired_scene,
-                           const SharedFirstBounds& first, Recorder& out, PhaseLaps& laps) {
+                           const embree::TriangleScene& repaired_scene, SharedFirstBounds& first,
+                           Recorder& out, PhaseLaps& laps) {
   const Mesh& repaired = result.repaired;
   const SurfaceDistanceOptions whole = whole_model_distance_options(options, diagonal);
   const SurfaceDistanceOptions hole_options = hole_region_options(options, whole, diagonal);
@@ -235,7 +241,8 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
   FirstBounds repaired_to_complete = first.repaired_to_complete;
   repaired_to_complete.steps = &patch_steps;
   SurfaceDistance d = surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
-                                       &repaired_to_complete, &first.complete_to_repaired);
+                                       &repaired_to_complete, &first.complete_to_repaired,
+                                       std::move(first.repaired_shared_faces));
   laps.lap(evaluation_phases::kWholeModelDistances);
   const DistanceSummary model = d.summary();
   out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);

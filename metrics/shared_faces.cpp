@@ -116,6 +116,30 @@ FacesOfVertex faces_of_vertex(const std::vector<std::array<int, 3>>& corners,
   return index;
 }
 
+// Matches A's face `f` (its corners in B's vertices) to B's face with the same three
+// vertices, in either orientation, that no earlier face of A took: the lowest index among the
+// faces around the first corner. Such a face holds corners[0] and, B's faces having distinct
+// corners, is the same set when it holds the other two and they differ.
+void match_face(std::size_t f, const std::array<int, 3>& corners, const FacesOfVertex& b_faces,
+                const std::vector<std::array<int, 3>>& b_corners, SharedFaces& result) {
+  if (corners[0] < 0 || corners[1] < 0 || corners[2] < 0)
+    return;
+  if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0])
+    return;
+  int match = -1;
+  for (int i = b_faces.offset[corners[0]]; i < b_faces.offset[corners[0] + 1] && match < 0; ++i) {
+    const auto& g = b_corners[b_faces.face[i]];
+    const auto holds = [&g](int v) { return g[0] == v || g[1] == v || g[2] == v; };
+    if (holds(corners[1]) && holds(corners[2]))
+      match = b_faces.face[i];
+  }
+  if (match < 0 || result.a_face_of_b[match] >= 0)
+    return;
+  result.b_face_of_a[f] = match;
+  result.a_face_of_b[match] = static_cast<int>(f);
+  ++result.count;
+}
+
 }  // namespace
 
 SharedFaces shared_faces(const Mesh& a, const Mesh& b) {
@@ -145,25 +169,62 @@ SharedFaces shared_faces(const Mesh& a, const Mesh& b) {
     std::array<int, 3> corners;
     for (int k = 0; k < 3; ++k)
       corners[k] = b_vertex_of_a[a_corners[f][k]];
-    if (corners[0] < 0 || corners[1] < 0 || corners[2] < 0)
+    match_face(f, corners, b_faces, b_corners, result);
+  }
+  return result;
+}
+
+struct SharedFacesOfInput::Index {
+  Index(const Mesh& input, const Mesh& b) : b_vertex_of_point(b) {
+    for (std::size_t v = 0; v < input.n_vertices(); ++v)
+      b_vertex_of_input.push_back(b_vertex_of_point.find(input.points()[v]));
+    input_shared = shared_faces(input, b);
+    b_faces = faces_of_vertex(input_shared.b_corners, b.n_vertices());
+  }
+  VertexOfPoint b_vertex_of_point;  // points into B's points: B outlives the index
+  std::vector<int> b_vertex_of_input;
+  SharedFaces input_shared;
+  FacesOfVertex b_faces;
+};
+
+SharedFacesOfInput::SharedFacesOfInput(const Mesh& input, const Mesh& b)
+    : index_(std::make_unique<Index>(input, b)) {}
+
+SharedFacesOfInput::~SharedFacesOfInput() = default;
+
+const SharedFaces& SharedFacesOfInput::of_input() const {
+  return index_->input_shared;
+}
+
+std::optional<SharedFaces> SharedFacesOfInput::of_repair(const Mesh& repaired,
+                                                         const KeptFaces& kept) const {
+  const SharedFaces& input = index_->input_shared;
+  const std::size_t input_faces = input.b_face_of_a.size();
+  const std::size_t input_vertices = index_->b_vertex_of_input.size();
+  if (!kept.input_vertices_kept || repaired.n_faces() < input_faces ||
+      repaired.n_vertices() < input_vertices)
+    return std::nullopt;
+  for (std::size_t f = 0; f < input_faces; ++f) {
+    if (kept.input_face_of_repaired[f] != static_cast<int>(f))
+      return std::nullopt;
+  }
+  SharedFaces result = input;
+  result.b_face_of_a.resize(repaired.n_faces(), -1);
+  result.a_corners.resize(repaired.n_faces(), {-1, -1, -1});
+  const Point* points = repaired.points();
+  for (std::size_t f = input_faces; f < repaired.n_faces(); ++f) {
+    const FaceHandle face(static_cast<int>(f));
+    if (repaired.status(face).deleted())
       continue;
-    // B's face with the same three vertices, in either orientation: the lowest index
-    // among the faces around the first corner. Such a face holds corners[0] and, B's faces
-    // having distinct corners, is the same set when it holds the other two and they differ.
-    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0])
-      continue;
-    int match = -1;
-    for (int i = b_faces.offset[corners[0]]; i < b_faces.offset[corners[0] + 1] && match < 0; ++i) {
-      const auto& g = b_corners[b_faces.face[i]];
-      const auto holds = [&g](int v) { return g[0] == v || g[1] == v || g[2] == v; };
-      if (holds(corners[1]) && holds(corners[2]))
-        match = b_faces.face[i];
+    result.a_corners[f] = triangle_vertex_indices(repaired, face);
+    std::array<int, 3> corners;
+    for (int k = 0; k < 3; ++k) {
+      const int v = result.a_corners[f][k];
+      corners[k] = static_cast<std::size_t>(v) < input_vertices
+                       ? index_->b_vertex_of_input[v]
+                       : index_->b_vertex_of_point.find(points[v]);
     }
-    if (match < 0 || result.a_face_of_b[match] >= 0)
-      continue;
-    result.b_face_of_a[f] = match;
-    result.a_face_of_b[match] = static_cast<int>(f);
-    ++result.count;
+    match_face(f, corners, index_->b_faces, result.b_corners, result);
   }
   return result;
 }

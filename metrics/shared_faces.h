@@ -6,9 +6,12 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "metrics/kept_faces.h"
 
 #include <array>
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace holebench {
@@ -23,6 +26,30 @@ struct SharedFaces {
 };
 
 SharedFaces shared_faces(const Mesh& a, const Mesh& b);
+
+/// shared_faces(repair, b) from shared_faces(input, b), for repairs that keep the input: what
+/// is known of the input and of B is built once (metrics/case_evaluation.h keeps it per case)
+/// and each repair's faces after the input's are matched alone.
+class SharedFacesOfInput {
+ public:
+  SharedFacesOfInput(const Mesh& input, const Mesh& b);
+  ~SharedFacesOfInput();
+  SharedFacesOfInput(const SharedFacesOfInput&) = delete;
+  SharedFacesOfInput& operator=(const SharedFacesOfInput&) = delete;
+
+  /// shared_faces(input, b).
+  const SharedFaces& of_input() const;
+  /// shared_faces(repaired, b), the same result, where `repaired`'s first faces are the
+  /// input's at their indices (kept: input_face_of_repaired[f] == f for every input face f)
+  /// and its first vertices the input's (kept.input_vertices_kept): A's faces are matched in
+  /// index order, so the input's faces match as in the input, and only the faces after them
+  /// are looked up. Nothing where the repair does not keep the input so.
+  std::optional<SharedFaces> of_repair(const Mesh& repaired, const KeptFaces& kept) const;
+
+ private:
+  struct Index;
+  std::unique_ptr<Index> index_;
+};
 
 /// The faces of B (sorted) that can hold a closest point of a point on A's faces not shared
 /// with B. Every such point x has d(x, B) <= |x - s| for any vertex s of a shared face (s

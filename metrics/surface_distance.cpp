@@ -51,10 +51,11 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
                                  const embree::TriangleScene& b_scene,
                                  const SurfaceDistanceOptions& options,
                                  const FirstBounds* a_first_bounds,
-                                 const FirstBounds* b_first_bounds) {
+                                 const FirstBounds* b_first_bounds,
+                                 std::optional<SharedFaces> known_shared) {
   // One first pass per direction, shared by the Hausdorff and the mean searches; faces the
   // two meshes share exactly are skipped by both.
-  SharedFaces shared = shared_faces(a, b);
+  SharedFaces shared = known_shared ? std::move(*known_shared) : shared_faces(a, b);
   const VertexDistances a_vertices =
       vertex_distances(a, b_scene, &shared.b_face_of_a, earlier_vertex_answers(a, a_first_bounds));
   const VertexDistances b_vertices =

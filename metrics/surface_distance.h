@@ -44,6 +44,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace holebench {
@@ -231,11 +232,13 @@ struct SurfaceDistance {
 /// The two-sided distances between A and B, with Embree scenes of both built by the caller
 /// (so that they are built once and reused).
 /// `a_first_bounds`, `b_first_bounds` (optional): first-pass bounds (FirstBounds) for the
-/// mean search from A to B and from B to A.
+/// mean search from A to B and from B to A. `known_shared` (optional): shared_faces(a, b)
+/// where the caller has it (SharedFacesOfInput::of_repair), taken instead of computed.
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
                                  const SurfaceDistanceOptions& options = {},
                                  const FirstBounds* a_first_bounds = nullptr,
-                                 const FirstBounds* b_first_bounds = nullptr);
+                                 const FirstBounds* b_first_bounds = nullptr,
+                                 std::optional<SharedFaces> known_shared = std::nullopt);
 
 }  // namespace holebench
