@@ -223,19 +223,33 @@ ClosestPoint TriangleScene::closest_point(const Point& p) const {
 
 ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_bound) const {
   if (base_) {
-    // Each part's nearest, in `mesh`'s face indices; the nearer wins, the smaller face index
-    // among equals, as in a scene of the whole mesh.
-    ClosestPoint from_base = base_->closest_point(p, distance_upper_bound);
+    // The added part first (small, quick), then the base within its distance: the nearer
+    // wins, the smaller face index (in `mesh`'s indices) among equals, as in a scene of the
+    // whole mesh. The base's search is padded past the bound, so a face at the same distance
+    // is seen.
+    ClosestPoint from_added;
+    from_added.distance = std::numeric_limits<double>::infinity();
+    if (added_)
+      from_added = added_->closest_point(p, distance_upper_bound);
+    ClosestPoint from_base =
+        base_->nearest_within(p, std::min(distance_upper_bound, from_added.distance));
+    if (from_base.face < 0 && from_added.face < 0)
+      from_base = base_->nearest_within(p, std::numeric_limits<double>::infinity());
     if (from_base.face >= 0)
       from_base.face = (*face_of_base_face_)[from_base.face];
-    if (!added_)
-      return from_base;
-    const ClosestPoint from_added = added_->closest_point(p, distance_upper_bound);
     const bool added_wins =
-        from_added.distance < from_base.distance ||
-        (from_added.distance == from_base.distance && from_added.face < from_base.face);
+        from_added.face >= 0 &&
+        (from_base.face < 0 || from_added.distance < from_base.distance ||
+         (from_added.distance == from_base.distance && from_added.face < from_base.face));
     return added_wins ? from_added : from_base;
   }
+  ClosestPoint nearest = nearest_within(p, distance_upper_bound);
+  if (nearest.face < 0 && std::isfinite(distance_upper_bound) && !triangles_.empty())
+    return nearest_within(p, std::numeric_limits<double>::infinity());  // the bound did not hold
+  return nearest;
+}
+
+ClosestPoint TriangleScene::nearest_within(const Point& p, double distance_upper_bound) const {
   PointQueryState state;
   state.triangles = &triangles_;
   state.query = p;
@@ -254,16 +268,15 @@ ClosestPoint TriangleScene::closest_point(const Point& p, double distance_upper_
     query.radius = std::nextafter(static_cast<float>(distance_upper_bound + pad),
                                   std::numeric_limits<float>::infinity());
   }
+  ClosestPoint result;
+  result.distance = std::numeric_limits<double>::infinity();
+  if (triangles_.empty())
+    return result;
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(scene_, &query, &context, closest_point_callback, &state);
-  ClosestPoint result;
-  if (state.best_primitive == RTC_INVALID_GEOMETRY_ID) {
-    if (std::isfinite(distance_upper_bound) && !triangles_.empty())
-      return closest_point(p);  // the bound did not hold: search without it
-    result.distance = std::numeric_limits<double>::infinity();
+  if (state.best_primitive == RTC_INVALID_GEOMETRY_ID)
     return result;
-  }
   result.point = state.best_point;
   result.distance = state.best_distance;
   result.face = face_of_primitive_[state.best_primitive];

@@ -101,6 +101,10 @@ class TriangleScene {
   std::size_t triangle_count() const;
 
  private:
+  /// The nearest triangle among those within `distance_upper_bound` (padded past it by the
+  /// single-precision rounding), or face -1 and an infinite distance where there is none.
+  ClosestPoint nearest_within(const Point& p, double distance_upper_bound) const;
+
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
   std::vector<std::array<Point, 3>> triangles_;  // by Embree primitive id
