@@ -208,23 +208,27 @@ std::optional<SharedFaces> SharedFacesOfInput::of_repair(const Mesh& repaired,
     if (kept.input_face_of_repaired[f] != static_cast<int>(f))
       return std::nullopt;
   }
-  SharedFaces result = input;
+  // The face maps only: the corners' tables stay the case's (copying two tables of the
+  // model's size per job cost more than the matching).
+  SharedFaces result;
+  result.b_face_of_a = input.b_face_of_a;
   result.b_face_of_a.resize(repaired.n_faces(), -1);
-  result.a_corners.resize(repaired.n_faces(), {-1, -1, -1});
+  result.a_face_of_b = input.a_face_of_b;
+  result.count = input.count;
   const Point* points = repaired.points();
   for (std::size_t f = input_faces; f < repaired.n_faces(); ++f) {
     const FaceHandle face(static_cast<int>(f));
     if (repaired.status(face).deleted())
       continue;
-    result.a_corners[f] = triangle_vertex_indices(repaired, face);
+    const std::array<int, 3> own = triangle_vertex_indices(repaired, face);
     std::array<int, 3> corners;
     for (int k = 0; k < 3; ++k) {
-      const int v = result.a_corners[f][k];
+      const int v = own[k];
       corners[k] = static_cast<std::size_t>(v) < input_vertices
                        ? index_->b_vertex_of_input[v]
                        : index_->b_vertex_of_point.find(points[v]);
     }
-    match_face(f, corners, index_->b_faces, result.b_corners, result);
+    match_face(f, corners, index_->b_faces, input.b_corners, result);
   }
   return result;
 }

@@ -43,7 +43,9 @@ class SharedFacesOfInput {
   /// input's at their indices (kept: input_face_of_repaired[f] == f for every input face f)
   /// and its first vertices the input's (kept.input_vertices_kept): A's faces are matched in
   /// index order, so the input's faces match as in the input, and only the faces after them
-  /// are looked up. Nothing where the repair does not keep the input so.
+  /// are looked up. Nothing where the repair does not keep the input so. The result has the
+  /// face maps and the count; its `a_corners` and `b_corners` are left empty (the evaluation
+  /// reads only the maps; hausdorff_distance() computes its own).
   std::optional<SharedFaces> of_repair(const Mesh& repaired, const KeptFaces& kept) const;
 
  private:
