@@ -102,7 +102,11 @@ ChamferDistance chamfer_distance(const DistanceSummary& a_to_b, const DistanceSu
   return c;
 }
 
-AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
+namespace {
+
+// area_samples with each face's area given (by face index), where the caller has them.
+AreaSamples area_samples_of(const Mesh& a, std::size_t count, const std::vector<bool>* skip,
+                            const std::vector<double>& face_areas) {
   AreaSamples samples;
   std::vector<int> faces;
   std::vector<double> cumulative;
@@ -110,7 +114,7 @@ AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<boo
   for (auto f : a.faces()) {
     if (skip && (*skip)[f.idx()])
       continue;
-    const double area = face_area(a, f);
+    const double area = face_areas[f.idx()];
     if (!(area > 0.0))
       continue;
     total += area;
@@ -135,6 +139,19 @@ AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<boo
   return samples;
 }
 
+std::vector<double> face_areas_of(const Mesh& a) {
+  std::vector<double> areas(a.n_faces(), 0.0);
+  for (auto f : a.faces())
+    areas[f.idx()] = face_area(a, f);
+  return areas;
+}
+
+}  // namespace
+
+AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
+  return area_samples_of(a, count, skip, face_areas_of(a));
+}
+
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
                                    const std::vector<int>* b_face_of_a) {
@@ -142,8 +159,9 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
   agreement.within_fraction.assign(options.thresholds.size(), 0.0);
   std::vector<bool> shared(a.n_faces(), false);
   double shared_area = 0.0;
+  const std::vector<double> face_areas = face_areas_of(a);  // once, for the sums and samples
   for (auto f : a.faces()) {
-    const double area = face_area(a, f);
+    const double area = face_areas[f.idx()];
     if (!(area > 0.0))
       continue;
     agreement.area += area;
@@ -157,8 +175,9 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
   agreement.sampled_area = agreement.area - shared_area;
   const double shared_share = shared_area / agreement.area;
   const double sampled_share = 1.0 - shared_share;
-  const AreaSamples samples =
-      agreement.sampled_area > 0.0 ? area_samples(a, options.samples, &shared) : AreaSamples{};
+  const AreaSamples samples = agreement.sampled_area > 0.0
+                                  ? area_samples_of(a, options.samples, &shared, face_areas)
+                                  : AreaSamples{};
   agreement.samples = samples.points.size();
   std::vector<std::size_t> within(options.thresholds.size(), 0);
   double cosine_sum = 0.0;
