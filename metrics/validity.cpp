@@ -50,43 +50,6 @@ GrowingBox face_box(const Mesh& mesh, FaceHandle f) {
   return box;
 }
 
-// Directed edges (u, v) used by two faces or more, each counted once: the faces' edges
-// bucketed by u (a counting sort), then each vertex's few targets sorted.
-std::size_t orientation_conflicts(const Mesh& mesh) {
-  std::vector<std::size_t> start(mesh.n_vertices() + 1, 0);
-  std::vector<std::array<int, 3>> faces;
-  faces.reserve(mesh.n_faces());
-  for (auto f : mesh.faces()) {
-    std::array<int, 3> ids{};
-    int k = 0;
-    for (auto v : mesh.fv_range(f))
-      if (k < 3)
-        ids[k++] = v.idx();
-    faces.push_back(ids);
-    for (int i = 0; i < 3; ++i)
-      ++start[ids[i] + 1];
-  }
-  for (std::size_t i = 1; i < start.size(); ++i)
-    start[i] += start[i - 1];
-  std::vector<int> targets(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (const auto& ids : faces)
-    for (int i = 0; i < 3; ++i)
-      targets[next[ids[i]]++] = ids[(i + 1) % 3];
-  std::size_t conflicts = 0;
-  for (std::size_t u = 0; u + 1 < start.size(); ++u) {
-    const auto first = targets.begin() + static_cast<std::ptrdiff_t>(start[u]);
-    const auto last = targets.begin() + static_cast<std::ptrdiff_t>(start[u + 1]);
-    std::sort(first, last);
-    for (auto it = first; it != last;) {
-      const auto end = std::find_if(it, last, [&](int v) { return v != *it; });
-      conflicts += end - it > 1;
-      it = end;
-    }
-  }
-  return conflicts;
-}
-
 }  // namespace
 
 InputSelfIntersections input_self_intersections(const Mesh& input) {
@@ -157,7 +120,7 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
       if (!repaired.is_manifold(v))
         ++result.non_manifold_vertices;
     }
-    result.orientation_conflicts = orientation_conflicts(repaired);
+    result.orientation_conflicts = conflicting_edges(repaired).size();
   }
 
   if (options.self_intersections) {

@@ -33,4 +33,34 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
+std::string from_base64(const std::string& text) {
+  std::string out;
+  std::uint32_t chunk = 0;
+  int bits = 0;
+  for (char ch : text) {
+    int value = -1;
+    if (ch >= 'A' && ch <= 'Z')
+      value = ch - 'A';
+    else if (ch >= 'a' && ch <= 'z')
+      value = ch - 'a' + 26;
+    else if (ch >= '0' && ch <= '9')
+      value = ch - '0' + 52;
+    else if (ch == '+')
+      value = 62;
+    else if (ch == '/')
+      value = 63;
+    else if (ch == '=')
+      break;
+    else
+      throw std::runtime_error("not base64");
+    chunk = (chunk << 6) | static_cast<std::uint32_t>(value);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out += static_cast<char>((chunk >> bits) & 0xFF);
+    }
+  }
+  return out;
+}
+
 }  // namespace holebench::harness

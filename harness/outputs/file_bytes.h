@@ -13,4 +13,8 @@ std::string read_bytes(const std::filesystem::path& path);
 /// Base64 of `bytes` (RFC 4648, with padding).
 std::string base64(const std::string& bytes);
 
+/// The bytes base64() wrote (RFC 4648, with padding). Throws std::runtime_error on a
+/// character outside the alphabet.
+std::string from_base64(const std::string& text);
+
 }  // namespace holebench::harness

@@ -134,37 +134,6 @@ void write_whole(const std::string& ply_bytes, const std::filesystem::path& path
   std::filesystem::rename(temporary, path);
 }
 
-/// The inverse of base64() (RFC 4648, with padding). Throws std::runtime_error.
-std::string from_base64(const std::string& text) {
-  std::string out;
-  std::uint32_t chunk = 0;
-  int bits = 0;
-  for (char ch : text) {
-    int value = -1;
-    if (ch >= 'A' && ch <= 'Z')
-      value = ch - 'A';
-    else if (ch >= 'a' && ch <= 'z')
-      value = ch - 'a' + 26;
-    else if (ch >= '0' && ch <= '9')
-      value = ch - '0' + 52;
-    else if (ch == '+')
-      value = 62;
-    else if (ch == '/')
-      value = 63;
-    else if (ch == '=')
-      break;
-    else
-      throw std::runtime_error("not base64");
-    chunk = (chunk << 6) | static_cast<std::uint32_t>(value);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out += static_cast<char>((chunk >> bits) & 0xFF);
-    }
-  }
-  return out;
-}
-
 std::array<float, 4> vertex(const Point& p, double quality) {
   return {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]),
           static_cast<float>(quality)};
@@ -237,7 +206,7 @@ std::string read_viewer_ply(const std::filesystem::path& path) {
   const std::size_t end = text.rfind("\");");
   if (text.rfind(start, 0) != 0 || end == std::string::npos || end < start.size())
     throw std::runtime_error(path.string() + ": not a viewer mesh file");
-  return harness::gunzip_bytes(from_base64(text.substr(start.size(), end - start.size())));
+  return harness::gunzip_bytes(harness::from_base64(text.substr(start.size(), end - start.size())));
 }
 
 void write_patch_mesh(const Case& c, const Mesh& repaired, const std::filesystem::path& path,
