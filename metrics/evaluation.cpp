@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace holebench {
 
@@ -299,17 +300,29 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
                          options.f_score_tau_large_rel_diag * diagonal};
   sampling.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
   sampling.samples = options.literature_samples;
+  // The hole region first: where the whole model's unshared faces are the hole region's (no
+  // noise, a patch of new faces), the whole model's samples are its samples, and their
+  // answers are taken from it (SampledAnswers: the same numbers).
+  std::optional<std::pair<SampledAgreement, SampledAgreement>> hole;
+  SampledAnswers patch_answers, truth_answers;
+  if (regions.truth && regions.patch) {
+    SampledAgreementOptions hole_sampling = sampling;
+    hole_sampling.samples = options.hole_literature_samples;
+    hole.emplace(sampled_agreement(*regions.patch, complete_scene, hole_sampling, nullptr, nullptr,
+                                   &patch_answers),
+                 sampled_agreement(*regions.truth, repaired_scene, hole_sampling, nullptr, nullptr,
+                                   &truth_answers));
+  }
   // Faces the two models share exactly count exactly (distance 0, the same normal).
   const SharedFaces& shared = regions.shared;
-  add_agreement(out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
-                sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a),
-                sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b));
-  if (regions.truth && regions.patch) {
-    sampling.samples = options.hole_literature_samples;
+  add_agreement(
+      out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
+      sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
+                        &patch_answers),
+      sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, &truth_answers));
+  if (hole) {
     add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,
-                  kHoleNormalConsistencyFraction,
-                  sampled_agreement(*regions.patch, complete_scene, sampling),
-                  sampled_agreement(*regions.truth, repaired_scene, sampling));
+                  kHoleNormalConsistencyFraction, hole->first, hole->second);
   }
   EdgeChamferOptions edge_options;
   edge_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
@@ -374,13 +387,13 @@ bool valid_repair(const MethodResult& result, const Validity& v) {
 
 void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
                   double diagonal, const CaseEvaluation* shared, const KeptFaces* kept,
-                  Recorder& out) {
+                  const embree::TriangleScene* repaired_scene, Recorder& out) {
   const InputSelfIntersections* known_input = shared ? shared->input_self_intersections() : nullptr;
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
   const Validity v = validity(c.input, result.repaired, validity_options, known_input, kept,
-                              shared ? &shared->input_topology() : nullptr);
+                              shared ? &shared->input_topology() : nullptr, repaired_scene);
   out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
   out.add_flag(kIsClosed, v.open_boundary_loops == 0);
   out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);
@@ -483,18 +496,11 @@ void add_fallbacks(const MethodResult& result, Recorder& out) {
 std::unique_ptr<embree::TriangleScene> repaired_scene_of(const Mesh& repaired,
                                                          const CaseEvaluation* shared,
                                                          const KeptFaces* kept) {
-  const auto dropped = [](int face) { return face < 0; };
   if (shared && kept && shared->input_scene() && kept->order_kept &&
-      std::none_of(kept->repaired_face_of_input.begin(), kept->repaired_face_of_input.end(),
-                   dropped)) {
-    std::vector<int> added;
-    for (std::size_t f = 0; f < kept->input_face_of_repaired.size(); ++f) {
-      if (kept->input_face_of_repaired[f] < 0)
-        added.push_back(static_cast<int>(f));
-    }
-    return std::make_unique<embree::TriangleScene>(*shared->input_scene(),
-                                                   kept->repaired_face_of_input,
-                                                   kept->input_face_of_repaired, repaired, added);
+      kept->every_input_face_kept()) {
+    return std::make_unique<embree::TriangleScene>(
+        *shared->input_scene(), kept->repaired_face_of_input, kept->input_face_of_repaired,
+        repaired, kept->repaired_faces_not_kept);
   }
   return std::make_unique<embree::TriangleScene>(repaired);
 }
@@ -524,9 +530,9 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     first = shared_first_bounds(c, result, shared, &*kept);
     laps.lap(evaluation_phases::kKeptFaces);
   }
+  std::unique_ptr<embree::TriangleScene> repaired_scene_owner;
   if (result.repaired.n_faces() > 0) {
-    const auto repaired_scene_owner =
-        repaired_scene_of(result.repaired, shared, kept ? &*kept : nullptr);
+    repaired_scene_owner = repaired_scene_of(result.repaired, shared, kept ? &*kept : nullptr);
     const embree::TriangleScene& repaired_scene = *repaired_scene_owner;
     laps.lap(evaluation_phases::kRepairedScene);
     const RegionMeshes regions = add_distances(c, result, options, diagonal, complete_scene,
@@ -548,7 +554,8 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     add_feature_recovery(c, result, options, diagonal, complete_scene, shortcuts, out);
     laps.lap(evaluation_phases::kFeatureRecovery);
   }
-  add_validity(c, result, options, diagonal, shared, kept ? &*kept : nullptr, out);
+  add_validity(c, result, options, diagonal, shared, kept ? &*kept : nullptr,
+               shared ? repaired_scene_owner.get() : nullptr, out);
   laps.lap(evaluation_phases::kValidity);
   // The reports' holes, matched once for the classification and the arrows.
   const std::vector<HoleMatch> matches =

@@ -100,9 +100,9 @@ class SharpEdgesFromInput {
                       const FeatureRecoveryShortcuts& known)
       : repaired_(repaired), known_(known) {
     const double threshold = options.segmentation.sharp_angle_degrees * M_PI / 180.0;
-    for (std::size_t f = 0; f < known.kept->input_face_of_repaired.size(); ++f) {
-      const FaceHandle face(static_cast<int>(f));
-      if (known.kept->input_face_of_repaired[f] >= 0 || repaired.status(face).deleted())
+    for (int f : known.kept->repaired_faces_not_kept) {
+      const FaceHandle face(f);
+      if (repaired.status(face).deleted())
         continue;
       for (auto h : repaired.fh_range(face)) {
         const EdgeHandle e = repaired.edge_handle(h);
@@ -178,8 +178,7 @@ bool sharp_edges_from_input(const FeatureOptions& options, const FeatureRecovery
   if (options.regions_from_mesh || !known.input_face_regions || !known.kept ||
       !known.repaired_scene)
     return false;
-  const auto& kept = known.kept->repaired_face_of_input;
-  return std::none_of(kept.begin(), kept.end(), [](int f) { return f < 0; });
+  return known.kept->every_input_face_kept();
 }
 
 }  // namespace

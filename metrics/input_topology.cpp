@@ -57,16 +57,16 @@ std::optional<TopologyCounts> topology_from_input(const Mesh& input, const Mesh&
                                                   const KeptFaces& kept) {
   // A: the vertices of the faces the repair changed, on either side.
   std::vector<int> changed_vertices;
-  for (std::size_t f = 0; f < kept.input_face_of_repaired.size(); ++f) {
-    const FaceHandle face(static_cast<int>(f));
-    if (kept.input_face_of_repaired[f] < 0 && !repaired.status(face).deleted()) {
+  for (int f : kept.repaired_faces_not_kept) {
+    const FaceHandle face(f);
+    if (!repaired.status(face).deleted()) {
       for (int v : triangle_vertex_indices(repaired, face))
         changed_vertices.push_back(v);
     }
   }
-  for (std::size_t f = 0; f < kept.repaired_face_of_input.size(); ++f) {
-    const FaceHandle face(static_cast<int>(f));
-    if (kept.repaired_face_of_input[f] < 0 && !input.status(face).deleted()) {
+  for (int f : kept.input_faces_not_kept) {
+    const FaceHandle face(f);
+    if (!input.status(face).deleted()) {
       for (int v : triangle_vertex_indices(input, face))
         changed_vertices.push_back(v);
     }

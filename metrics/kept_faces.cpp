@@ -84,28 +84,37 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
     }
   }
   int last_input_face = -1;
-  for (int g : kept.input_face_of_repaired) {
-    if (g < 0)
+  for (std::size_t f = 0; f < kept.input_face_of_repaired.size(); ++f) {
+    const int g = kept.input_face_of_repaired[f];
+    if (g < 0) {
+      kept.repaired_faces_not_kept.push_back(static_cast<int>(f));
       continue;
+    }
     kept.order_kept = kept.order_kept && g > last_input_face;
     last_input_face = g;
+  }
+  for (std::size_t f = 0; f < kept.repaired_face_of_input.size(); ++f) {
+    if (kept.repaired_face_of_input[f] < 0)
+      kept.input_faces_not_kept.push_back(static_cast<int>(f));
   }
   return kept;
 }
 
 GrowingBox changed_faces_box(const Mesh& input, const Mesh& repaired, const KeptFaces& kept) {
   GrowingBox box;
-  for (auto f : repaired.faces()) {
-    if (kept.input_face_of_repaired[f.idx()] < 0) {
-      for (auto v : repaired.fv_range(f))
-        box.add(repaired.point(v));
-    }
+  for (int f : kept.repaired_faces_not_kept) {
+    const FaceHandle face(f);
+    if (repaired.status(face).deleted())
+      continue;
+    for (auto v : repaired.fv_range(face))
+      box.add(repaired.point(v));
   }
-  for (auto f : input.faces()) {
-    if (kept.repaired_face_of_input[f.idx()] < 0) {
-      for (auto v : input.fv_range(f))
-        box.add(input.point(v));
-    }
+  for (int f : kept.input_faces_not_kept) {
+    const FaceHandle face(f);
+    if (input.status(face).deleted())
+      continue;
+    for (auto v : input.fv_range(face))
+      box.add(input.point(v));
   }
   return box;
 }

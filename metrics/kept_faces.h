@@ -22,6 +22,13 @@ struct KeptFaces {
   /// Every input vertex is a vertex of the repair at its index with its point, bit for bit
   /// (what the repair adds are vertices after the input's).
   bool input_vertices_kept = false;
+  /// The repaired faces that are not kept (input_face_of_repaired -1), in index order,
+  /// deleted ones among them: where the repair differs, without a pass over the model.
+  std::vector<int> repaired_faces_not_kept;
+  /// The input faces the repair did not keep (repaired_face_of_input -1), in index order.
+  std::vector<int> input_faces_not_kept;
+  /// No input face is dropped: every input face is kept.
+  bool every_input_face_kept() const { return input_faces_not_kept.empty(); }
 };
 
 KeptFaces kept_faces(const Mesh& input, const Mesh& repaired);

@@ -4,6 +4,7 @@
 #include "core/geometry.h"
 #include "core/portable_math.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/face_subset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,19 +37,23 @@ struct EdgeSegment {
   Point a, b;
 };
 
-// The sharp edges (|dihedral| >= the threshold) of `mesh` that bound a face `wanted` says yes
-// to; boundary edges have no dihedral angle and are not sharp.
-template <typename Wanted>
+// The sharp edges (|dihedral| >= the threshold) of `mesh` that bound a face of `faces`, in
+// edge index order (the order of a pass over every edge): found from those faces' own edges,
+// at the cost of the region. Boundary edges have no dihedral angle and are not sharp.
 std::vector<EdgeSegment> sharp_edges_around(const Mesh& mesh, double sharp_angle_degrees,
-                                            Wanted wanted) {
+                                            const std::vector<int>& faces) {
   const double threshold = sharp_angle_degrees * kPi / 180.0;
+  std::vector<int> edge_indices;
+  for (int f : faces) {
+    for (auto h : mesh.fh_range(FaceHandle(f)))
+      edge_indices.push_back(mesh.edge_handle(h).idx());
+  }
+  std::sort(edge_indices.begin(), edge_indices.end());
+  edge_indices.erase(std::unique(edge_indices.begin(), edge_indices.end()), edge_indices.end());
   std::vector<EdgeSegment> edges;
-  for (auto e : mesh.edges()) {
-    if (mesh.is_boundary(e))
-      continue;
-    const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
-    const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
-    if (!wanted(f0) && !wanted(f1))
+  for (int index : edge_indices) {
+    const EdgeHandle e(index);
+    if (mesh.status(e).deleted() || mesh.is_boundary(e))
       continue;
     if (std::abs(signed_dihedral_angle(mesh, e)) >= threshold)
       edges.push_back({mesh.point(mesh.from_vertex_handle(mesh.halfedge_handle(e, 0))),
@@ -152,10 +157,32 @@ AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<boo
   return area_samples_of(a, count, skip, face_areas_of(a));
 }
 
+namespace {
+
+// The normal cone's answer at each sample: `known`'s where it took the same points (and
+// normals), else asked of the scene.
+std::vector<NormalConeAngle> cone_answers(const AreaSamples& samples,
+                                          const embree::TriangleScene& b_scene,
+                                          const NormalConeOptions& options,
+                                          const SampledAnswers* known) {
+  if (known && known->points == samples.points && known->normals == samples.normals)
+    return known->cones;
+  std::vector<NormalConeAngle> cones;
+  cones.reserve(samples.points.size());
+  for (std::size_t i = 0; i < samples.points.size(); ++i)
+    cones.push_back(normal_cone_angle(b_scene, samples.points[i], samples.normals[i], options));
+  return cones;
+}
+
+}  // namespace
+
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
-                                   const std::vector<int>* b_face_of_a) {
+                                   const std::vector<int>* b_face_of_a, const SampledAnswers* known,
+                                   SampledAnswers* answers) {
   SampledAgreement agreement;
+  if (answers)
+    *answers = {};
   agreement.within_fraction.assign(options.thresholds.size(), 0.0);
   std::vector<bool> shared(a.n_faces(), false);
   double shared_area = 0.0;
@@ -181,9 +208,8 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
   agreement.samples = samples.points.size();
   std::vector<std::size_t> within(options.thresholds.size(), 0);
   double cosine_sum = 0.0;
-  for (std::size_t i = 0; i < samples.points.size(); ++i) {
-    const NormalConeAngle cone =
-        normal_cone_angle(b_scene, samples.points[i], samples.normals[i], options.normal_cone);
+  std::vector<NormalConeAngle> cones = cone_answers(samples, b_scene, options.normal_cone, known);
+  for (const NormalConeAngle& cone : cones) {
     cosine_sum += cone.largest_abs_cosine;
     for (std::size_t t = 0; t < options.thresholds.size(); ++t)
       within[t] += cone.nearest_distance <= options.thresholds[t] ? 1 : 0;
@@ -193,6 +219,8 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
     agreement.within_fraction[t] = shared_share + (n > 0.0 ? sampled_share * within[t] / n : 0.0);
   agreement.abs_cosine_mean = shared_share + (n > 0.0 ? sampled_share * cosine_sum / n : 0.0);
   agreement.fraction_error = n > 0.0 ? sampled_share * 1.29 / std::sqrt(n) : 0.0;
+  if (answers)
+    *answers = {samples.points, samples.normals, std::move(cones)};
   return agreement;
 }
 
@@ -204,14 +232,9 @@ std::optional<double> edge_chamfer_distance(const Mesh& complete,
                                             const std::vector<int>& removed_faces,
                                             const Mesh& repaired,
                                             const EdgeChamferOptions& options) {
-  std::vector<bool> removed(complete.n_faces(), false);
-  for (int f : removed_faces)
-    removed[f] = true;
-  const auto truth = sharp_edges_around(complete, options.sharp_angle_degrees,
-                                        [&](auto f) { return f.is_valid() && removed[f.idx()]; });
-  const auto repair = sharp_edges_around(repaired, options.sharp_angle_degrees, [&](auto f) {
-    return f.is_valid() && is_new(repaired, f);
-  });
+  const auto truth = sharp_edges_around(complete, options.sharp_angle_degrees, removed_faces);
+  const auto repair =
+      sharp_edges_around(repaired, options.sharp_angle_degrees, new_face_indices(repaired));
   if (truth.empty() || repair.empty())
     return std::nullopt;
   const auto truth_points = sample_segments(truth, options.edge_sample_spacing);

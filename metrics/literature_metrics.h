@@ -69,12 +69,26 @@ struct SampledAgreement {
   double fraction_error = 0.0;
 };
 
+/// The points an agreement sampled and what B's normal cone answered at each: another
+/// agreement against the same scene with the same options that takes the same points (bit for
+/// bit, the same normals) takes these answers instead of asking again. The whole model's
+/// sampled area is often the hole region's (the repair's unshared faces are its patch).
+struct SampledAnswers {
+  std::vector<Point> points;
+  std::vector<Point> normals;
+  std::vector<NormalConeAngle> cones;
+};
+
 /// A against B's scene. `b_face_of_a` (optional): by face of A, the same face in B or -1
 /// (shared_faces.h); shared faces count as within every threshold with |cosine| 1.
-/// Deterministic: the same meshes give the same numbers.
+/// `known` (optional): answers of an agreement against `b_scene` with these options, taken
+/// where its points are these; `answers` (optional) receives this agreement's own.
+/// Deterministic: the same meshes give the same numbers, with or without `known`.
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
-                                   const std::vector<int>* b_face_of_a = nullptr);
+                                   const std::vector<int>* b_face_of_a = nullptr,
+                                   const SampledAnswers* known = nullptr,
+                                   SampledAnswers* answers = nullptr);
 
 /// The points `sampled_agreement` takes on A (faces skipped where `skip` says so): `count`
 /// points spread by area, and the face each lies on.

@@ -2,6 +2,7 @@
 
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
+#include "metrics/embree/triangle_scene.h"
 #include "metrics/growing_box.h"
 #include "metrics/kept_faces.h"
 
@@ -50,6 +51,33 @@ GrowingBox face_box(const Mesh& mesh, FaceHandle f) {
   return box;
 }
 
+// The kept faces of `repaired` that may meet a face inside `box`, in index order: where a scene
+// is given, those within the sphere about the box whose own box meets it (a kept face that
+// meets a face inside the box has a point in the box, so within that sphere: no intersecting
+// pair is lost), else every kept face whose box meets it, from a pass over every face.
+std::vector<int> kept_faces_meeting(const Mesh& repaired, const KeptFaces& kept,
+                                    const GrowingBox& box, const embree::TriangleScene* scene) {
+  const auto is_kept = [&](int f) { return kept.input_face_of_repaired[f] >= 0; };
+  std::vector<int> meeting;
+  if (scene) {
+    const Point centre = (box.lo + box.hi) * 0.5;
+    const double radius = 0.5 * (box.hi - box.lo).norm() * (1.0 + 1e-6);
+    for (int f : scene->faces_within(centre, radius)) {
+      if (is_kept(f) && !repaired.status(FaceHandle(f)).deleted() &&
+          face_box(repaired, FaceHandle(f)).meets(box))
+        meeting.push_back(f);
+    }
+    std::sort(meeting.begin(), meeting.end());
+    meeting.erase(std::unique(meeting.begin(), meeting.end()), meeting.end());
+    return meeting;
+  }
+  for (auto f : repaired.faces()) {
+    if (is_kept(f.idx()) && face_box(repaired, f).meets(box))
+      meeting.push_back(f.idx());
+  }
+  return meeting;
+}
+
 }  // namespace
 
 InputSelfIntersections input_self_intersections(const Mesh& input) {
@@ -58,25 +86,26 @@ InputSelfIntersections input_self_intersections(const Mesh& input) {
 
 cgal::SelfIntersections self_intersections_from_input(const Mesh& repaired,
                                                       const InputSelfIntersections& known_input,
-                                                      const KeptFaces& kept_of_input) {
+                                                      const KeptFaces& kept_of_input,
+                                                      const embree::TriangleScene* repaired_scene) {
   const auto is_kept = [&](int f) { return kept_of_input.input_face_of_repaired[f] >= 0; };
   std::vector<int> others;
   GrowingBox others_box;
-  for (auto f : repaired.faces()) {
-    if (is_kept(f.idx()))
+  for (int f : kept_of_input.repaired_faces_not_kept) {
+    const FaceHandle face(f);
+    if (repaired.status(face).deleted())
       continue;
-    others.push_back(f.idx());
-    for (auto v : repaired.fv_range(f))
+    others.push_back(f);
+    for (auto v : repaired.fv_range(face))
       others_box.add(repaired.point(v));
   }
   // The pairs with a face that is not kept: among those faces and the kept ones nearby.
   std::vector<FacePair> pairs;
   if (!others.empty()) {
     std::vector<int> tested = others;
-    for (auto f : repaired.faces()) {
-      if (is_kept(f.idx()) && face_box(repaired, f).meets(others_box))
-        tested.push_back(f.idx());
-    }
+    const std::vector<int> near =
+        kept_faces_meeting(repaired, kept_of_input, others_box, repaired_scene);
+    tested.insert(tested.end(), near.begin(), near.end());
     for (const FacePair& p : cgal::self_intersecting_pairs(repaired, tested)) {
       if (!(is_kept(p.first) && is_kept(p.second)))
         pairs.push_back(p);
@@ -105,7 +134,7 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
 
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
                   const InputSelfIntersections* known_input, const KeptFaces* kept_of_input,
-                  const InputTopology* topology) {
+                  const InputTopology* topology, const embree::TriangleScene* repaired_scene) {
   Validity result;
   std::optional<TopologyCounts> counts;
   if (topology && kept_of_input)
@@ -126,7 +155,8 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   if (options.self_intersections) {
     cgal::SelfIntersections pairs;
     if (known_input) {
-      pairs = kept_of_input ? self_intersections_from_input(repaired, *known_input, *kept_of_input)
+      pairs = kept_of_input ? self_intersections_from_input(repaired, *known_input, *kept_of_input,
+                                                            repaired_scene)
                             : self_intersections_from_input(input, repaired, *known_input);
     } else {
       for (const auto& [f, g] : cgal::self_intersecting_pairs(repaired)) {
@@ -152,14 +182,21 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   // An input face away from the holes that the repair kept is unchanged (the same points in
   // the same order); the others are looked up among the repaired faces by their points.
   std::vector<int> not_kept;
-  for (auto f : input.faces()) {
-    if (kept_of_input && kept_of_input->repaired_face_of_input[f.idx()] >= 0)
-      continue;
+  const auto add_if_away_from_holes = [&](FaceHandle f) {
     bool near_hole = false;
     for (auto v : input.fv_range(f))
       near_hole = near_hole || input.is_boundary(v);
     if (!near_hole)
       not_kept.push_back(f.idx());
+  };
+  if (kept_of_input) {
+    for (int f : kept_of_input->input_faces_not_kept) {
+      if (!input.status(FaceHandle(f)).deleted())
+        add_if_away_from_holes(FaceHandle(f));
+    }
+  } else {
+    for (auto f : input.faces())
+      add_if_away_from_holes(f);
   }
   if (!not_kept.empty()) {
     std::set<std::array<std::array<double, 3>, 3>> repaired_faces;

@@ -28,6 +28,10 @@
 
 namespace holebench {
 
+namespace embree {
+class TriangleScene;
+}
+
 struct ValidityOptions {
   double degenerate_area = 1e-14;   ///< model units^2 (the evaluation scales by diagonal^2)
   double min_angle_degrees = 1e-3;  ///< a new face with a smaller angle is degenerate
@@ -74,10 +78,12 @@ InputSelfIntersections input_self_intersections(const Mesh& input);
 /// `topology` (optional, with `kept_of_input`): input_topology(input), where the caller keeps
 /// it; the open loops, non-manifold vertices and orientation conflicts are then counted at the
 /// repair's changes (input_topology.h): the same counts.
+/// `repaired_scene` (optional, with `known_input` and `kept_of_input`): the repaired mesh's
+/// scene, which finds the kept faces near the others without a pass over every face.
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {},
                   const InputSelfIntersections* known_input = nullptr,
-                  const KeptFaces* kept_of_input = nullptr,
-                  const InputTopology* topology = nullptr);
+                  const KeptFaces* kept_of_input = nullptr, const InputTopology* topology = nullptr,
+                  const embree::TriangleScene* repaired_scene = nullptr);
 
 /// The self-intersections of `repaired` from the input's own pairs. The faces of `repaired`
 /// that are the input's (kept_faces.h; a rotated face is not kept, only tested again): two
@@ -85,12 +91,14 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
 /// the input (the same points and the same shared vertices). Every other pair has a face
 /// that is not kept, whose box lies in the bounding box of those faces: CGAL tests those
 /// faces and the kept faces whose box meets that bounding box, and the pairs of two kept
-/// faces it finds there are the input's.
+/// faces it finds there are the input's. With `repaired_scene` (a scene of `repaired`), those
+/// kept faces are the ones it finds within the sphere about that box, filtered by the same box
+/// test: the same faces in the same order.
 cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const Mesh& repaired,
                                                       const InputSelfIntersections& known_input);
-cgal::SelfIntersections self_intersections_from_input(const Mesh& repaired,
-                                                      const InputSelfIntersections& known_input,
-                                                      const KeptFaces& kept_of_input);
+cgal::SelfIntersections self_intersections_from_input(
+    const Mesh& repaired, const InputSelfIntersections& known_input, const KeptFaces& kept_of_input,
+    const embree::TriangleScene* repaired_scene = nullptr);
 
 namespace cgal {
 /// CGAL::Polygon_mesh_processing::self_intersections on the mesh itself (CGAL's OpenMesh
