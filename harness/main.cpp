@@ -40,10 +40,11 @@ int main(int argc, char** argv) {
   namespace cli = holebench::harness::cli;
   // In the order `holebench --help` lists them.
   const std::vector<cli::Subcommand> subcommands{
-      cli::add_list_command(app),    cli::add_cases_command(app),    cli::add_run_command(app),
-      cli::add_merge_command(app),   cli::add_slurm_command(app),    cli::add_suites_command(app),
-      cli::add_compare_command(app), cli::add_validate_command(app), cli::add_figures_command(app),
-      cli::add_history_command(app), cli::add_report_command(app),   cli::add_timing_command(app)};
+      cli::add_list_command(app),     cli::add_cases_command(app),   cli::add_run_command(app),
+      cli::add_evaluate_command(app), cli::add_merge_command(app),   cli::add_slurm_command(app),
+      cli::add_suites_command(app),   cli::add_compare_command(app), cli::add_validate_command(app),
+      cli::add_figures_command(app),  cli::add_history_command(app), cli::add_report_command(app),
+      cli::add_timing_command(app)};
 
   CLI11_PARSE(app, argc, argv);
   try {

@@ -114,6 +114,10 @@ Subcommand add_run_command(CLI::App& app) {
                 "crest lines, feature lines, sub-holes, faces, transitions, arrows) and draw "
                 "them: layers/<job>.png, one panel per step, and layers/<job>.obj. Metrics "
                 "ignore them. Meant for a single job or a few");
+  run->add_flag("--repaired-meshes", flags.repaired_meshes,
+                "Write each job's repaired mesh (repaired/<job>.ply, the whole model) and what "
+                "its method reported (repaired/<job>.method.json), to score them again with "
+                "`holebench evaluate --cases` (docs/evaluate.md)");
   run->add_option("--workers,-j", flags.workers, "Jobs at once (default: the number of cores)")
       ->check(CLI::NonNegativeNumber);
   run->add_option("--timeout", values->timeout,

@@ -21,6 +21,7 @@ struct Subcommand {
 Subcommand add_list_command(CLI::App& app);      ///< list: methods and case families
 Subcommand add_cases_command(CLI::App& app);     ///< cases list | export | gallery
 Subcommand add_run_command(CLI::App& app);       ///< run: a suite or an ad hoc selection
+Subcommand add_evaluate_command(CLI::App& app);  ///< evaluate: repairs made elsewhere, scored
 Subcommand add_merge_command(CLI::App& app);     ///< merge: results files, or --shards
 Subcommand add_slurm_command(CLI::App& app);     ///< slurm submit | status | resubmit
 Subcommand add_suites_command(CLI::App& app);    ///< suites: the suites and descriptions

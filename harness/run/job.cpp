@@ -30,6 +30,49 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Runs the method of `job` on its case (options.method_repetitions times, the first run's
+// result kept) and records what the method says into `record`: user, times, phases.
+MethodResult run_method(const Job& job, const Case& c, const JobOptions& options,
+                        JobRecord& record) {
+  const std::unique_ptr<Method> method =
+      job.external ? std::make_unique<ExternalMethod>(*job.external) : make_method(job.method_id);
+  const std::unique_ptr<User> user = make_user(job.user, c);
+  record.user = user->kind();
+  const auto start = Clock::now();
+  MethodParameters parameters;
+  parameters.structure_size = c.parameters.structure_size;
+  parameters.record_layers = !options.layers_dir.empty();
+  seed_cgal_default_random();
+  MethodResult result = method->run(c.input, parameters, *user);
+  record.method_run_seconds.push_back(seconds_since(start));
+  // Further runs for the timing only, each as the first: a fresh user, the same seed.
+  for (int run = 1; run < options.method_repetitions; ++run) {
+    const std::unique_ptr<User> again_user = make_user(job.user, c);
+    const auto again = Clock::now();
+    seed_cgal_default_random();
+    method->run(c.input, parameters, *again_user);
+    record.method_run_seconds.push_back(seconds_since(again));
+  }
+  record.method_seconds = median_of(record.method_run_seconds);
+  double method_total = 0.0;
+  for (double seconds : record.method_run_seconds)
+    method_total += seconds;
+  record.stages.push_back({stage_names::kMethod, method_total});
+  record.user_interventions = user->interventions();
+  record.user_interventions_by_kind = user->interventions_by_kind();
+  record.phases = result.phases;
+  return result;
+}
+
+// The record as the method left it (before the evaluation), with the status its result gives:
+// what `--repaired-meshes` keeps beside the repaired mesh.
+JobRecord with_method_status(JobRecord record, const MethodResult& result) {
+  record.status = result.status == MethodStatus::Failed    ? JobStatus::MethodFailed
+                  : result.status == MethodStatus::Partial ? JobStatus::Partial
+                                                           : JobStatus::Ok;
+  return record;
+}
+
 }  // namespace
 
 PreparedCase prepare_case(const Job& job, const JobOptions& options) {
@@ -90,35 +133,18 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
   record.stages.push_back({stage_names::kCase, first_of_group ? prepared.seconds : 0.0});
 
   try {
-    const std::unique_ptr<Method> method =
-        job.external ? std::make_unique<ExternalMethod>(*job.external) : make_method(job.method_id);
-    const std::unique_ptr<User> user = make_user(job.user, c);
-    record.user = user->kind();
     const auto start = Clock::now();
-    MethodParameters parameters;
-    parameters.structure_size = c.parameters.structure_size;
-    parameters.record_layers = !options.layers_dir.empty();
-    seed_cgal_default_random();
-    MethodResult result = method->run(c.input, parameters, *user);
-    record.method_run_seconds.push_back(seconds_since(start));
-    // Further runs for the timing only, each as the first: a fresh user, the same seed.
-    for (int run = 1; run < options.method_repetitions; ++run) {
-      const std::unique_ptr<User> again_user = make_user(job.user, c);
-      const auto again = Clock::now();
-      seed_cgal_default_random();
-      method->run(c.input, parameters, *again_user);
-      record.method_run_seconds.push_back(seconds_since(again));
+    const MethodResult result =
+        options.scored_repairs ? read_scored_repair(job, c.input, *options.scored_repairs, record)
+                               : run_method(job, c, options, record);
+    if (options.scored_repairs) {
+      record.stages.push_back({stage_names::kMethod, seconds_since(start)});
+      record.phases = result.phases;
     }
-    record.method_seconds = median_of(record.method_run_seconds);
-    double method_total = 0.0;
-    for (double seconds : record.method_run_seconds)
-      method_total += seconds;
-    record.stages.push_back({stage_names::kMethod, method_total});
-    record.user_interventions = user->interventions();
-    record.user_interventions_by_kind = user->interventions_by_kind();
-    record.phases = result.phases;
     record.holes = result.holes;
     record.message = result.message;
+    if (!options.repaired_mesh_dir.empty())
+      write_repaired_files(options.repaired_mesh_dir, with_method_status(record, result), result);
     if (result.status == MethodStatus::Failed) {
       // An external program that ran out of memory under the job's limit says so.
       record.status = message_reports_out_of_memory(result.message) ? JobStatus::OutOfMemory

@@ -5,6 +5,7 @@
 #include "core/statistics.h"  // median_of: a job's method time over repetitions
 #include "generators/case_catalog.h"
 #include "harness/results/record.h"
+#include "harness/run/scored_repairs.h"
 #include "methods/external/external_method_spec.h"
 #include "methods/method.h"
 #include "metrics/case_evaluation.h"
@@ -39,6 +40,12 @@ struct JobOptions {
   /// Runs of the method per job, for steadier timings: the record's method time is their
   /// median; the first run's result is the one evaluated (the methods are deterministic).
   int method_repetitions = 1;
+  /// Where each job writes its repaired mesh and its method's record (`--repaired-meshes`,
+  /// harness/run/scored_repairs.h), so that the run's repairs can be scored again; empty: none.
+  std::filesystem::path repaired_mesh_dir;
+  /// Set: the jobs' results are read from these files instead of running their methods
+  /// (`holebench evaluate --cases`, harness/run/scored_repairs.h); the rest of a job is the same.
+  const ScoredRepairs* scored_repairs = nullptr;
 };
 
 /// The case of a job, made once for every job that shares it (the same case id, noise level

@@ -72,6 +72,7 @@ RunOptions resolve_run_options(const Suite& suite, const RunFlags& flags) {
   options.snapshots = !flags.no_snapshots;
   options.viewer_meshes = !flags.no_viewer_meshes;
   options.layers = flags.layers;
+  options.repaired_meshes = flags.repaired_meshes;
   options.workers = flags.workers;
   options.resume = flags.resume;
   if (flags.shard)

@@ -36,6 +36,7 @@ struct RunFlags {
   bool no_snapshots = false;                             ///< --no-snapshots
   bool no_viewer_meshes = false;                         ///< --no-viewer-meshes
   bool layers = false;                                   ///< --layers
+  bool repaired_meshes = false;                          ///< --repaired-meshes
   int workers = 0;                                       ///< --workers; 0: the number of cores
   std::optional<double> timeout_seconds;                 ///< --timeout
   bool resume = false;                                   ///< --resume

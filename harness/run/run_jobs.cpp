@@ -134,7 +134,8 @@ RunSummary run_jobs(const RunOptions& options) {
     png_writer = std::async(std::launch::async, render::load_png_writer);
   const generators::CaseCatalog catalog(run_catalog_options(options));
   print_skipped_models(catalog);
-  const std::vector<Job> jobs = jobs_of_shard(plan_jobs(options, catalog), options.shard);
+  const std::vector<Job> jobs = jobs_of_shard(
+      options.jobs.empty() ? plan_jobs(options, catalog) : options.jobs, options.shard);
   std::filesystem::create_directories(options.out_dir);
   JobOptions job_options;
   job_options.catalog = &catalog;
@@ -147,6 +148,10 @@ RunSummary run_jobs(const RunOptions& options) {
     std::filesystem::create_directories(job_options.snapshot_dir);
     png_writer.get();  // loaded once here, not in every job's process
   }
+  if (options.repaired_meshes)
+    job_options.repaired_mesh_dir = options.out_dir / "repaired";
+  if (options.scored_repairs)
+    job_options.scored_repairs = &*options.scored_repairs;
   if (options.layers) {
     job_options.layers_dir = options.out_dir / "layers";
     std::filesystem::create_directories(job_options.layers_dir);

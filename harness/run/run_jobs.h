@@ -7,6 +7,7 @@
 #include "harness/run/suite.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ struct RunOptions {
   /// Ask the methods for their steps as geometry and draw them into layers/ (`--layers`,
   /// JobOptions::layers_dir).
   bool layers = false;
+  /// Write each job's repaired mesh and its method's record into repaired/ (`--repaired-meshes`,
+  /// harness/run/scored_repairs.h), to be scored again by `holebench evaluate --cases`.
+  bool repaired_meshes = false;
+  /// Set (`holebench evaluate --cases`): exactly these jobs, instead of the suite's plan (whose
+  /// cases must still name their families, for the catalog), ...
+  std::vector<Job> jobs;
+  /// ... and their results read from files instead of running their methods.
+  std::optional<ScoredRepairs> scored_repairs;
   int workers = 0;       ///< processes at once; 0: the number of cores
   bool resume = false;   ///< keep the records already in the folder's records.jsonl
   bool progress = true;  ///< progress on stderr

@@ -110,23 +110,9 @@ MethodResult run_external_method(const Mesh& holed, const ExternalMethodSpec& sp
                       "bit, and orientation)",
                   err_log);
   }
-  result.repaired = std::move(patch.repaired);
-  result.holes = std::move(patch.holes);
-  std::size_t open = 0;
-  for (const auto& hole : result.holes)
-    open += hole.closed ? 0 : 1;
-  result.status = open == 0                                             ? MethodStatus::Ok
-                  : open == result.holes.size() && patch.new_faces == 0 ? MethodStatus::Failed
-                                                                        : MethodStatus::Partial;
-  if (open > 0) {
-    result.message =
-        std::to_string(open) + " of " + std::to_string(result.holes.size()) + " holes left open";
-  }
-  if (patch.refused_faces > 0) {
-    result.message += (result.message.empty() ? "" : "; ") + std::to_string(patch.refused_faces) +
-                      " of the program's new faces left out (degenerate, or non-manifold with "
-                      "the rest)";
-  }
+  MethodResult scored = result_of_output_patch(std::move(patch));
+  scored.phases = std::move(result.phases);
+  result = std::move(scored);
   return result;
 }
 

@@ -202,4 +202,26 @@ OutputPatch recover_output_patch(const Mesh& holed, const TriangleSoup& output,
   return patch;
 }
 
+MethodResult result_of_output_patch(OutputPatch patch) {
+  MethodResult result;
+  result.repaired = std::move(patch.repaired);
+  result.holes = std::move(patch.holes);
+  std::size_t open = 0;
+  for (const auto& hole : result.holes)
+    open += hole.closed ? 0 : 1;
+  result.status = open == 0                                             ? MethodStatus::Ok
+                  : open == result.holes.size() && patch.new_faces == 0 ? MethodStatus::Failed
+                                                                        : MethodStatus::Partial;
+  if (open > 0) {
+    result.message =
+        std::to_string(open) + " of " + std::to_string(result.holes.size()) + " holes left open";
+  }
+  if (patch.refused_faces > 0) {
+    result.message += (result.message.empty() ? "" : "; ") + std::to_string(patch.refused_faces) +
+                      " of the program's new faces left out (degenerate, or non-manifold with "
+                      "the rest)";
+  }
+  return result;
+}
+
 }  // namespace holebench

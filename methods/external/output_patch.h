@@ -31,4 +31,10 @@ struct OutputPatch {
 OutputPatch recover_output_patch(const Mesh& holed, const TriangleSoup& output,
                                  double vertex_tolerance = 0.0);
 
+/// The method's result an output patch makes, for a repair whose program says no more than its
+/// mesh (an external method, a repaired mesh scored from a file): the patch's hole reports; ok
+/// when every hole is closed, failed when none is and no face was added, partial otherwise,
+/// with a message that counts the open holes and the output's faces left out.
+MethodResult result_of_output_patch(OutputPatch patch);
+
 }  // namespace holebench
