@@ -8,14 +8,19 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace holebench {
 namespace {
 
 using harness::test_support::read_text;
 
+// A folder of its own per test: CTest runs the tests of this file in parallel, and one test
+// emptying a shared folder would pull the file from under another.
 std::filesystem::path fresh_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / "holebench_atomic_file_test";
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto dir = std::filesystem::temp_directory_path() /
+                   (std::string("holebench_atomic_file_test_") + test->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
