@@ -122,13 +122,26 @@ MeshPairEvaluation evaluate_mesh_pair(const Mesh& complete, const TriangleSoup& 
   bool with_holed = false;
   if (holed) {
     OutputPatch patch = recover_output_patch(*holed, repaired);
+    std::vector<HoleTruth> holes;
+    std::size_t removed = 0;
     if (patch.input_faces_missing == 0) {
+      holes = holes_of(complete, *holed);
+      for (const auto& hole : holes)
+        removed += hole.removed_faces.size();
+    }
+    if (patch.input_faces_missing == 0 && 2 * removed >= complete.n_faces()) {
+      // A holed mesh whose points moved (noise) shares no face with the complete one: every
+      // face would be "removed", and the hole region the whole model.
+      pair.note = "the holed mesh shares " + std::to_string(complete.n_faces() - removed) +
+                  " of the complete mesh's " + std::to_string(complete.n_faces()) +
+                  " faces (a noisy input?); the holes are found only where its faces are the "
+                  "complete mesh's, bit for bit; measured without it";
+    } else if (patch.input_faces_missing == 0) {
       with_holed = true;
       c.input = *holed;
-      c.holes = holes_of(complete, *holed);
+      c.holes = std::move(holes);
       pair.holes = c.holes.size();
-      for (const auto& hole : c.holes)
-        pair.removed_faces += hole.removed_faces.size();
+      pair.removed_faces = removed;
       pair.new_faces = patch.new_faces;
       result = result_of_output_patch(std::move(patch));
     } else {

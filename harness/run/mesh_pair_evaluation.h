@@ -9,7 +9,9 @@
 // faces must come back unchanged: methods/external/output_patch.h), the hole is the complete
 // model's faces the holed mesh lacks (one hole per connected set of them, their missing sharp
 // edges and corners from a feature analysis of the complete mesh, as punched holes have), and
-// every hole-region metric and the patch's validity are added.
+// every hole-region metric and the patch's validity are added. The holed mesh's faces must be
+// the complete mesh's, bit for bit (a hole cut from a clean model); where at most half of the
+// complete mesh's faces are found in it (a noisy input), it is not used, with a note.
 #pragma once
 
 #include "core/mesh.h"
@@ -28,7 +30,8 @@ struct MeshPairEvaluation {
   std::size_t holes = 0;             ///< with the holed mesh: the holes found
   std::size_t removed_faces = 0;     ///< ... the complete mesh's faces they remove
   std::size_t new_faces = 0;         ///< ... the repaired mesh's faces not in the holed mesh
-  /// Where the holed mesh was given but could not be used (the repair changed its faces): why;
+  /// Where the holed mesh was given but could not be used (the repair changed its faces, or it
+  /// shares too few faces with the complete mesh): why;
   /// the metrics are then those of the two meshes alone.
   std::string note;
 };

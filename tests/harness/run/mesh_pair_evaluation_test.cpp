@@ -84,5 +84,16 @@ TEST(MeshPairEvaluationInput, ARepairThatChangedTheHoledMeshIsMeasuredAlone) {
   EXPECT_EQ(find(pair.metrics, "hole_hausdorff_rel_diag"), nullptr);
 }
 
+// A noisy holed mesh shares no face with the clean complete one: it is not used (every face
+// would count as removed), and the note says why.
+TEST(MeshPairEvaluationInput, ANoisyHoledMeshIsNotTakenForAHoleEverywhere) {
+  const Case c = generators::make_case("box/corner", 0, 5.0);
+  const auto pair = evaluate_mesh_pair(c.complete, to_soup(c.input), &c.input);
+  EXPECT_NE(pair.note.find("a noisy input?"), std::string::npos) << pair.note;
+  EXPECT_EQ(pair.holes, 0u);
+  EXPECT_NE(find(pair.metrics, "hausdorff_rel_diag"), nullptr);
+  EXPECT_EQ(find(pair.metrics, "hole_mean_distance_rel_diag"), nullptr);
+}
+
 }  // namespace
 }  // namespace holebench::harness
