@@ -100,22 +100,25 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
   return kept;
 }
 
+namespace {
+
+// The points of `faces` of `mesh` (deleted ones left out) into `box`.
+void add_faces_to_box(const Mesh& mesh, const std::vector<int>& faces, GrowingBox& box) {
+  for (int f : faces) {
+    const FaceHandle face(f);
+    if (mesh.status(face).deleted())
+      continue;
+    for (auto v : mesh.fv_range(face))
+      box.add(mesh.point(v));
+  }
+}
+
+}  // namespace
+
 GrowingBox changed_faces_box(const Mesh& input, const Mesh& repaired, const KeptFaces& kept) {
   GrowingBox box;
-  for (int f : kept.repaired_faces_not_kept) {
-    const FaceHandle face(f);
-    if (repaired.status(face).deleted())
-      continue;
-    for (auto v : repaired.fv_range(face))
-      box.add(repaired.point(v));
-  }
-  for (int f : kept.input_faces_not_kept) {
-    const FaceHandle face(f);
-    if (input.status(face).deleted())
-      continue;
-    for (auto v : input.fv_range(face))
-      box.add(input.point(v));
-  }
+  add_faces_to_box(repaired, kept.repaired_faces_not_kept, box);
+  add_faces_to_box(input, kept.input_faces_not_kept, box);
   return box;
 }
 

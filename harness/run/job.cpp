@@ -31,7 +31,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Runs the method of `job` on its case (options.method_repetitions times, the first run's
-// result kept) and records what the method says into `record`: user, times, phases.
+// result kept) and records what the method says into `record`: user, interventions, times.
 MethodResult run_method(const Job& job, const Case& c, const JobOptions& options,
                         JobRecord& record) {
   const std::unique_ptr<Method> method =
@@ -60,17 +60,7 @@ MethodResult run_method(const Job& job, const Case& c, const JobOptions& options
   record.stages.push_back({stage_names::kMethod, method_total});
   record.user_interventions = user->interventions();
   record.user_interventions_by_kind = user->interventions_by_kind();
-  record.phases = result.phases;
   return result;
-}
-
-// The record as the method left it (before the evaluation), with the status its result gives:
-// what `--repaired-meshes` keeps beside the repaired mesh.
-JobRecord with_method_status(JobRecord record, const MethodResult& result) {
-  record.status = result.status == MethodStatus::Failed    ? JobStatus::MethodFailed
-                  : result.status == MethodStatus::Partial ? JobStatus::Partial
-                                                           : JobStatus::Ok;
-  return record;
 }
 
 }  // namespace
@@ -137,21 +127,20 @@ JobRecord run_job_on_case(const Job& job, const PreparedCase& prepared, bool fir
     const MethodResult result =
         options.scored_repairs ? read_scored_repair(job, c.input, *options.scored_repairs, record)
                                : run_method(job, c, options, record);
-    if (options.scored_repairs) {
+    if (options.scored_repairs)
       record.stages.push_back({stage_names::kMethod, seconds_since(start)});
-      record.phases = result.phases;
-    }
+    record.phases = result.phases;
     record.holes = result.holes;
     record.message = result.message;
-    if (!options.repaired_mesh_dir.empty())
-      write_repaired_files(options.repaired_mesh_dir, with_method_status(record, result), result);
-    if (result.status == MethodStatus::Failed) {
-      // An external program that ran out of memory under the job's limit says so.
-      record.status = message_reports_out_of_memory(result.message) ? JobStatus::OutOfMemory
+    // An external program that ran out of memory under the job's limit says so.
+    record.status = result.status == MethodStatus::Partial          ? JobStatus::Partial
+                    : result.status == MethodStatus::Ok             ? JobStatus::Ok
+                    : message_reports_out_of_memory(result.message) ? JobStatus::OutOfMemory
                                                                     : JobStatus::MethodFailed;
+    if (!options.repaired_mesh_dir.empty())
+      write_repaired_files(options.repaired_mesh_dir, record, result);
+    if (result.status == MethodStatus::Failed)
       return record;
-    }
-    record.status = result.status == MethodStatus::Partial ? JobStatus::Partial : JobStatus::Ok;
     const auto evaluation_start = Clock::now();
     Evaluation evaluation = prepared.evaluation
                                 ? evaluate(c, result, options.evaluation, *prepared.evaluation)

@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/mesh_io.h"
+#include "harness/outputs/file_bytes.h"
 #include "harness/outputs/file_names.h"
 #include "harness/results/record_json.h"
 #include "methods/external/output_patch.h"
@@ -9,7 +10,6 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -56,11 +56,8 @@ std::optional<JobRecord> read_method_record(const fs::path& path) {
   std::error_code ignored;
   if (!fs::exists(path, ignored))
     return std::nullopt;
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
   try {
-    return record_from_json_text(text.str());
+    return record_from_json_text(read_bytes(path));
   } catch (const std::exception& e) {
     throw InvalidInputError(path.string() + ": not a method record: " + e.what());
   }
