@@ -28,6 +28,8 @@ packages=(
   meshlab xvfb xauth
   # reports: plots; the worked example of an external method (examples/fan_fill.py)
   python3 python3-matplotlib
+  # the Python module (python/): pybind11 and NumPy
+  python3-dev pybind11-dev python3-numpy
   # the report's 3D viewer: three.js r111, copied into each report (harness/outputs/viewer/),
   # and the headless browser its test draws it in (tests/harness/outputs/viewer/)
   libjs-three chromium

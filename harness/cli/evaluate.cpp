@@ -105,18 +105,9 @@ int evaluate_pair(const EvaluateValues& values) {
     nlohmann::ordered_json j;
     j["complete"] = values.complete.string();
     j["repaired"] = values.repaired.string();
-    if (holed) {
+    if (holed)
       j["holed"] = values.holed.string();
-      j["holes"] = pair.holes;
-      j["removed_faces"] = pair.removed_faces;
-      j["new_faces"] = pair.new_faces;
-    }
-    j["complete_bounding_box_diagonal"] = pair.diagonal;
-    if (!pair.note.empty())
-      j["note"] = pair.note;
-    auto& metrics = j["metrics"] = nlohmann::ordered_json::object();
-    for (const auto& metric : pair.metrics)
-      metrics[metric.name] = metric.value;
+    j.update(mesh_pair_to_json(pair, holed.has_value()));
     fmt::print("{}\n", j.dump(2));
     return 0;
   }

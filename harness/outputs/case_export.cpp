@@ -11,14 +11,7 @@
 
 namespace holebench::harness {
 
-void export_case(const Case& c, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
-  WriteOptions ply;
-  write_mesh(c.input, dir / "input.ply", ply);
-  write_mesh(c.input, dir / "input.off");
-  write_mesh(c.complete, dir / "complete.ply", ply);
-  write_mesh(c.complete, dir / "complete.off");
-
+nlohmann::ordered_json case_to_json(const Case& c) {
   nlohmann::ordered_json j;
   j["id"] = c.id;
   j["family"] = c.family;
@@ -26,7 +19,6 @@ void export_case(const Case& c, const std::filesystem::path& dir) {
   j["seed"] = c.seed;
   j["noise_percent"] = c.noise_percent;
   j["complete_bounding_box_diagonal"] = bounding_box_diagonal(c.complete);
-  j["files"] = {{"input", "input.ply"}, {"complete", "complete.ply"}};
   auto& holes = j["holes"] = nlohmann::ordered_json::array();
   for (const auto& hole : c.holes) {
     nlohmann::ordered_json h;
@@ -45,6 +37,19 @@ void export_case(const Case& c, const std::filesystem::path& dir) {
     h["labels"] = hole.labels ? labels_to_json(*hole.labels) : nlohmann::ordered_json();
     holes.push_back(h);
   }
+  return j;
+}
+
+void export_case(const Case& c, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  WriteOptions ply;
+  write_mesh(c.input, dir / "input.ply", ply);
+  write_mesh(c.input, dir / "input.off");
+  write_mesh(c.complete, dir / "complete.ply", ply);
+  write_mesh(c.complete, dir / "complete.off");
+
+  nlohmann::ordered_json j = case_to_json(c);
+  j["files"] = {{"input", "input.ply"}, {"complete", "complete.ply"}};
   std::ofstream out(dir / "case.json");
   out << j.dump(2) << '\n';
   if (!out)

@@ -3,6 +3,8 @@
 
 #include "core/case.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <filesystem>
 
 namespace holebench::harness {
@@ -12,5 +14,10 @@ namespace holebench::harness {
 /// and case.json (id, seed, noise, per hole: removed faces, missing edges and corners,
 /// labels).
 void export_case(const Case& c, const std::filesystem::path& dir);
+
+/// What case.json says of a case (the file names aside): id, family, kind, seed, noise, the
+/// complete model's diagonal and per hole its ground truth (target, removed faces, missing
+/// edges and corners, labels or null).
+nlohmann::ordered_json case_to_json(const Case& c);
 
 }  // namespace holebench::harness

@@ -7,6 +7,8 @@
 #include "generators/missing_sharp_edges.h"
 #include "methods/external/output_patch.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <array>
 #include <numeric>
@@ -161,6 +163,22 @@ MeshPairEvaluation evaluate_mesh_pair(const Mesh& complete, const TriangleSoup& 
       pair.metrics.push_back(metric);
   }
   return pair;
+}
+
+nlohmann::ordered_json mesh_pair_to_json(const MeshPairEvaluation& pair, bool with_holed) {
+  nlohmann::ordered_json j;
+  if (with_holed) {
+    j["holes"] = pair.holes;
+    j["removed_faces"] = pair.removed_faces;
+    j["new_faces"] = pair.new_faces;
+  }
+  j["complete_bounding_box_diagonal"] = pair.diagonal;
+  if (!pair.note.empty())
+    j["note"] = pair.note;
+  auto& metrics = j["metrics"] = nlohmann::ordered_json::object();
+  for (const auto& metric : pair.metrics)
+    metrics[metric.name] = metric.value;
+  return j;
 }
 
 }  // namespace holebench::harness

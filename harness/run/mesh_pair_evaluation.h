@@ -18,6 +18,8 @@
 #include "core/mesh_builder.h"
 #include "metrics/evaluation.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,5 +43,10 @@ struct MeshPairEvaluation {
 /// range, or the complete mesh has no faces.
 MeshPairEvaluation evaluate_mesh_pair(const Mesh& complete, const TriangleSoup& repaired,
                                       const Mesh* holed, const EvaluationOptions& options = {});
+
+/// The evaluation as `holebench evaluate --complete ... --json` prints it (the file names
+/// aside): holes, removed_faces and new_faces where the holed mesh was given (`with_holed`),
+/// complete_bounding_box_diagonal, note where there is one, and metrics (name -> value).
+nlohmann::ordered_json mesh_pair_to_json(const MeshPairEvaluation& pair, bool with_holed);
 
 }  // namespace holebench::harness
