@@ -54,6 +54,7 @@ struct CaseCatalog::State {
   mutable std::once_flag listed;
   mutable std::vector<CaseDescriptor> descriptors;
   mutable std::vector<SkippedModel> skipped;
+  mutable std::vector<ModelNote> model_notes;
   void add(CaseDescriptor descriptor) const { descriptors.push_back(std::move(descriptor)); }
 
   static Case make_punched(const AnalysedModel& model, const PunchTarget& target,
@@ -81,6 +82,8 @@ struct CaseCatalog::State {
       skipped.push_back({family + "/" + name, e.what()});
       return;
     }
+    for (const auto& note : model->notes)
+      model_notes.push_back({family + "/" + name, note});
     std::vector<PunchTarget> targets = find_punch_targets(*model);
     if (is_gear_model(family, name))
       targets.push_back(find_gear_tooth_target(*model));
@@ -295,6 +298,11 @@ const std::vector<CaseDescriptor>& CaseCatalog::cases() const {
 const std::vector<SkippedModel>& CaseCatalog::skipped() const {
   cases();
   return state_->skipped;
+}
+
+const std::vector<ModelNote>& CaseCatalog::model_notes() const {
+  cases();
+  return state_->model_notes;
 }
 
 Case CaseCatalog::make(const std::string& id, std::uint64_t seed, double noise_percent) const {

@@ -49,6 +49,12 @@ struct SkippedModel {
   std::string reason;
 };
 
+/// A note on a model the catalog read (its B-Rep faces sewn, a deflection retried).
+struct ModelNote {
+  std::string name;  ///< "file/<stem>"
+  std::string note;
+};
+
 struct SizeClass {
   const char* name;
   double radius_rel_diag;
@@ -66,6 +72,8 @@ class CaseCatalog {
   /// skipped().
   const std::vector<CaseDescriptor>& cases() const;
   const std::vector<SkippedModel>& skipped() const;
+  /// The notes on the models listed (AnalysedModel::notes), in listing order.
+  const std::vector<ModelNote>& model_notes() const;
 
   /// Generates case `id` with vertex noise `noise_percent` (% of 1 % of the diagonal) drawn
   /// from `seed`. The ground truth is always clean. Throws std::invalid_argument for an

@@ -25,6 +25,9 @@ struct AnalysedModel {
   /// segmentation: holes punched into it keep them in the input, as the B-Rep paper's
   /// input carries its faces.
   bool regions_are_brep_faces = false;
+  /// What reading the model took beyond the defaults (a B-Rep file's faces sewn, a deflection
+  /// retried: occt::BrepMesh::notes), one line each.
+  std::vector<std::string> notes;
 
   /// The face of the hole taxonomy that region `id` belongs to: coplanar regions that meet
   /// (a planar B-Rep face split in two) are one face.

@@ -53,6 +53,7 @@ BrepMesh read_brep_mesh(const std::filesystem::path& path, const TessellationOpt
   build.source = path.string();
   BrepMesh result;
   result.face_surfaces = std::move(tessellated.face_surfaces);
+  result.notes = std::move(tessellated.notes);
   result.mesh = build_mesh(tessellated.soup, build);
   return result;
 }

@@ -40,6 +40,15 @@ struct TessellationOptions {
   /// Seconds that reading and tessellating one file may take (read_brep_mesh reads in a child
   /// process, which is stopped past it: OpenCASCADE loops on some damaged files); 0: none.
   double time_limit_seconds = 600.0;
+  /// A shape with free edges (faces not sewn into a shell: core/occt/shape_sewing.h) is sewn
+  /// with BRepBuilderAPI_Sewing at this tolerance, relative to the diagonal, before it is
+  /// tessellated; 0: never sewn. 1e-4: edges exported apart by rounding (1e-6 to 1e-3 model
+  /// units on parts of 10 to 1000 units) are joined, features larger than that are not.
+  double sewing_tolerance_rel_diag = 1e-4;
+  /// Where a face does not tessellate at the linear deflection above, the whole shape is
+  /// tessellated again at the deflection times each of these factors in turn (finer first,
+  /// then coarser); the first at which every face tessellates is kept, with a note.
+  std::vector<double> retry_deflection_factors{0.25, 4.0};
 };
 
 /// A tessellated B-Rep: every triangle's region id is the id of the B-Rep face it lies on.
@@ -50,9 +59,13 @@ struct BrepMesh {
   /// Per B-Rep face id (= region id, 0-based, in the order of TopExp::MapShapes): the type
   /// of its surface. A triangle's surface type is face_surfaces[region(mesh, f)].
   std::vector<SurfaceType> face_surfaces;
+  /// What reading it took beyond the defaults, one line each: its faces sewn (with the free
+  /// edges before and after), a deflection retried. Empty for a clean file.
+  std::vector<std::string> notes;
 };
 
-/// Reads a STEP, IGES or BREP file (by extension) and tessellates it (tessellate_shape).
+/// Reads a STEP, IGES or BREP file (by extension), sews its faces where they are not sewn
+/// (options.sewing_tolerance_rel_diag) and tessellates it (tessellate_shape).
 /// Deterministic: the same file and options give the same mesh bit for bit.
 /// Throws InvalidInputError with a one-line message naming the file: missing file, unknown
 /// extension, a file OpenCASCADE cannot read as its format (with the read status), no faces,

@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/occt/brep_file_reader.h"
+#include "core/occt/shape_sewing.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -52,6 +53,9 @@ std::string encode(const TessellatedSoup& t) {
   put(out, static_cast<std::uint64_t>(t.face_surfaces.size()));
   for (SurfaceType type : t.face_surfaces)
     put(out, type);
+  put(out, static_cast<std::uint64_t>(t.notes.size()));
+  for (const std::string& note : t.notes)
+    put_text(out, note);
   return out;
 }
 
@@ -103,6 +107,9 @@ TessellatedSoup decode_soup(Reader& in) {
   t.face_surfaces.resize(in.count(sizeof(SurfaceType)));
   for (SurfaceType& type : t.face_surfaces)
     type = in.get<SurfaceType>();
+  t.notes.resize(in.count(sizeof(std::uint64_t)));
+  for (std::string& note : t.notes)
+    note = in.text();
   return t;
 }
 
@@ -118,12 +125,28 @@ void write_all(int fd, const std::string& bytes) {
   }
 }
 
+// Reads the file, sews its faces where they are not sewn, tessellates it.
+TessellatedSoup read_and_tessellate(const std::filesystem::path& path,
+                                    const TessellationOptions& options) {
+  TopoDS_Shape shape = read_brep_shape(path);
+  std::string sewing_note;
+  if (options.sewing_tolerance_rel_diag > 0.0) {
+    SewingResult sewing = sew_free_edges(shape, options.sewing_tolerance_rel_diag, path.string());
+    shape = sewing.shape;
+    sewing_note = sewing.note;
+  }
+  TessellatedSoup tessellated = tessellate_shape_soup(shape, options, path.string());
+  if (!sewing_note.empty())
+    tessellated.notes.insert(tessellated.notes.begin(), sewing_note);
+  return tessellated;
+}
+
 // The child: read, tessellate, answer, leave without running the parent's atexit handlers.
 [[noreturn]] void child_main(int fd, const std::filesystem::path& path,
                              const TessellationOptions& options) {
   std::string answer;
   try {
-    answer = encode(tessellate_shape_soup(read_brep_shape(path), options, path.string()));
+    answer = encode(read_and_tessellate(path, options));
   } catch (const InvalidInputError& e) {
     put(answer, Answer::InvalidInput);
     put_text(answer, e.what());

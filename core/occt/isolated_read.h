@@ -15,7 +15,9 @@
 
 namespace holebench::occt {
 
-/// read_brep_shape and tessellate_shape_soup of `path`, in a child process (fork). Throws
+/// read_brep_shape, sew_free_edges (where options.sewing_tolerance_rel_diag > 0; its note
+/// first in TessellatedSoup::notes) and tessellate_shape_soup of `path`, in a child process
+/// (fork). Throws
 /// InvalidInputError naming the file: the child's own InvalidInputError, or "OpenCASCADE
 /// crashed reading it (SIGNAL)" for a child that died, "did not finish reading it" for one
 /// that ran past options.time_limit_seconds (it is killed). The result is the same, bit for

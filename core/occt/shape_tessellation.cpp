@@ -21,6 +21,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <array>
 #include <cmath>
@@ -175,6 +176,57 @@ void drop_unused_points(TriangleSoup& soup) {
   soup.points = std::move(points);
 }
 
+void mesh_shape(const TopoDS_Shape& shape, double linear_deflection, double angular_deflection) {
+  BRepTools::Clean(shape);
+  BRepMesh_IncrementalMesh mesher(shape, linear_deflection, /*isRelative=*/false,
+                                  angular_deflection, /*isInParallel=*/false);
+}
+
+// The region ids (0-based) of the faces that have no triangulation.
+std::vector<int> untessellated_faces(const TopTools_IndexedMapOfShape& faces) {
+  std::vector<int> missing;
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) triangulation =
+        BRep_Tool::Triangulation(TopoDS::Face(faces(i)), location);
+    if (triangulation.IsNull() || triangulation->NbTriangles() == 0)
+      missing.push_back(i - 1);
+  }
+  return missing;
+}
+
+std::string face_list(const std::vector<int>& faces) {
+  return fmt::format("{} {}", faces.size() == 1 ? "face" : "faces", fmt::join(faces, ", "));
+}
+
+// Meshes `shape` at the options' deflection and, where a face does not tessellate, at each
+// retry factor in turn; returns the notes of a retry that succeeded, throws where none did.
+std::vector<std::string> mesh_every_face(const TopoDS_Shape& shape,
+                                         const TopTools_IndexedMapOfShape& faces, double diagonal,
+                                         const TessellationOptions& options,
+                                         const std::string& source) {
+  const double deflection = options.linear_deflection_rel_diag * diagonal;
+  mesh_shape(shape, deflection, options.angular_deflection_radians);
+  const std::vector<int> missing = untessellated_faces(faces);
+  if (missing.empty())
+    return {};
+  for (double factor : options.retry_deflection_factors) {
+    mesh_shape(shape, factor * deflection, options.angular_deflection_radians);
+    if (untessellated_faces(faces).empty()) {
+      return {
+          fmt::format("B-Rep {} did not tessellate at a linear deflection of {:g} of the "
+                      "diagonal; tessellated at {:g} times it ({} {})",
+                      face_list(missing), options.linear_deflection_rel_diag, factor,
+                      factor < 1.0 ? "finer" : "coarser", factor * deflection)};
+    }
+  }
+  throw InvalidInputError(fmt::format(
+      "{}: B-Rep {} did not tessellate (tried at a linear deflection of {:g} of the diagonal "
+      "and {:g} times it)",
+      source, face_list(missing), options.linear_deflection_rel_diag,
+      fmt::join(options.retry_deflection_factors, ", ")));
+}
+
 TessellatedSoup tessellate(const TopoDS_Shape& shape, const TessellationOptions& options,
                            const std::string& source) {
   TopTools_IndexedMapOfShape faces;
@@ -182,11 +234,8 @@ TessellatedSoup tessellate(const TopoDS_Shape& shape, const TessellationOptions&
   const double diagonal = exact_bounding_box_diagonal(shape);
   if (faces.IsEmpty() || !(diagonal > 0.0))
     throw InvalidInputError(fmt::format("{}: no faces to tessellate", source));
-  BRepTools::Clean(shape);
-  BRepMesh_IncrementalMesh mesher(shape, options.linear_deflection_rel_diag * diagonal,
-                                  /*isRelative=*/false, options.angular_deflection_radians,
-                                  /*isInParallel=*/false);
   TessellatedSoup result;
+  result.notes = mesh_every_face(shape, faces, diagonal, options, source);
   TriangulationWelder welder(shape, source);
   for (int i = 1; i <= faces.Extent(); ++i) {
     const TopoDS_Face& face = TopoDS::Face(faces(i));

@@ -25,8 +25,12 @@ namespace holebench::occt {
 ///   of a solid.
 /// Region id of each triangle: the index of its face in TopExp::MapShapes(shape, FACE),
 /// 0-based. Any existing triangulation of the shape is replaced (BRepTools::Clean).
+/// Where a face does not tessellate, the whole shape is tessellated again at the deflection
+/// times each of options.retry_deflection_factors in turn, and the first at which every face
+/// tessellates is kept, with a note (TessellatedSoup::notes).
 /// Throws InvalidInputError naming `source` for a shape without faces, a face without
-/// triangulation, or a mesh that build_mesh rejects (e.g. a non-manifold edge).
+/// triangulation at every deflection tried, or a mesh that build_mesh rejects (e.g. a
+/// non-manifold edge).
 /// \bug An open shell gives an open mesh; callers that need a closed one check it.
 BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& options,
                           const std::string& source = "<shape>");
@@ -36,6 +40,7 @@ BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& 
 struct TessellatedSoup {
   TriangleSoup soup;
   std::vector<SurfaceType> face_surfaces;
+  std::vector<std::string> notes;  ///< as BrepMesh::notes
 };
 TessellatedSoup tessellate_shape_soup(const TopoDS_Shape& shape, const TessellationOptions& options,
                                       const std::string& source = "<shape>");

@@ -8,6 +8,7 @@
 #include "generators/cad/remesh.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
@@ -68,9 +69,11 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const AnalysedModel>> cache;
   const std::string key =
-      fmt::format("{}|{}|{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
+      fmt::format("{}|{}|{}|{}|{}|{}|{}", source.path.string(), options.target_edge_length_rel_diag,
                   options.sharp_angle_degrees, options.tessellation.linear_deflection_rel_diag,
-                  options.tessellation.angular_deflection_radians);
+                  options.tessellation.angular_deflection_radians,
+                  options.tessellation.sewing_tolerance_rel_diag,
+                  fmt::join(options.tessellation.retry_deflection_factors, ","));
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (auto it = cache.find(key); it != cache.end())
@@ -79,8 +82,15 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   // A B-Rep model's regions are its faces: they are kept through remeshing and used instead
   // of a segmentation, so its labels come from the B-Rep's faces.
   const bool brep = occt::is_brep_file(source.path);
-  Mesh mesh =
-      brep ? occt::read_brep_mesh(source.path, options.tessellation).mesh : read_mesh(source.path);
+  std::vector<std::string> notes;
+  Mesh mesh;
+  if (brep) {
+    occt::BrepMesh brep_mesh = occt::read_brep_mesh(source.path, options.tessellation);
+    mesh = std::move(brep_mesh.mesh);
+    notes = std::move(brep_mesh.notes);
+  } else {
+    mesh = read_mesh(source.path);
+  }
   const auto loops = find_boundary_loops(mesh);
   if (!loops.empty()) {
     throw InvalidInputError(
@@ -97,6 +107,7 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   features.regions_from_mesh = brep;
   AnalysedModel analysed = analyse_model(source.name, remesh_isotropic(mesh, remesh), features);
   analysed.regions_are_brep_faces = brep;
+  analysed.notes = std::move(notes);
   auto model = std::make_shared<const AnalysedModel>(std::move(analysed));
   std::lock_guard<std::mutex> lock(mutex);
   cache.emplace(key, model);

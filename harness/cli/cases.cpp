@@ -44,7 +44,7 @@ int cases_list(const CaseCatalog& catalog, const std::vector<std::string>& patte
       extra = "  " + labels_summary(catalog.make(c.id));
     fmt::print("{:<48} {}{}\n", c.id, c.description, extra);
   }
-  print_skipped_models(catalog);
+  print_catalog_notes(catalog);
   std::fprintf(stderr, "%zu cases\n", selected.size());
   return 0;
 }
@@ -58,7 +58,7 @@ int cases_export(const CaseCatalog& catalog, const std::vector<std::string>& pat
     export_case(c, dir / file_stem_of_id(c.id));
     std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, selected.size(), c.id.c_str());
   }
-  print_skipped_models(catalog);
+  print_catalog_notes(catalog);
   return 0;
 }
 

@@ -23,11 +23,13 @@ bool names_a_skipped_model(const generators::CaseCatalog& catalog, const std::st
 
 }  // namespace
 
-void print_skipped_models(const generators::CaseCatalog& catalog) {
+void print_catalog_notes(const generators::CaseCatalog& catalog) {
   for (const auto& skipped : catalog.skipped()) {
     std::fprintf(stderr, "holebench: skipped model %s: %s\n", skipped.name.c_str(),
                  skipped.reason.c_str());
   }
+  for (const auto& note : catalog.model_notes())
+    std::fprintf(stderr, "holebench: model %s: %s\n", note.name.c_str(), note.note.c_str());
 }
 
 std::vector<generators::CaseDescriptor> select_cases(const generators::CaseCatalog& catalog,

@@ -9,8 +9,9 @@
 
 namespace holebench::harness {
 
-/// Prints each model the catalog skipped, with its reason, to stderr.
-void print_skipped_models(const generators::CaseCatalog& catalog);
+/// Prints each model the catalog skipped, with its reason, and each note on a model it read (a
+/// B-Rep file's faces sewn, a deflection retried), to stderr.
+void print_catalog_notes(const generators::CaseCatalog& catalog);
 
 /// The catalog's cases matching any of `patterns`, in catalog order. An exact id or a
 /// pattern that matches nothing is an error (std::invalid_argument), so that a typo never

@@ -133,7 +133,7 @@ RunSummary run_jobs(const RunOptions& options) {
   if (options.snapshots)
     png_writer = std::async(std::launch::async, render::load_png_writer);
   const generators::CaseCatalog catalog(run_catalog_options(options));
-  print_skipped_models(catalog);
+  print_catalog_notes(catalog);
   const std::vector<Job> jobs = jobs_of_shard(
       options.jobs.empty() ? plan_jobs(options, catalog) : options.jobs, options.shard);
   std::filesystem::create_directories(options.out_dir);

@@ -177,6 +177,25 @@ TEST(BrepFileCases, PlanarHolesInBrepPartsAreLabelledFromTheFaces) {
       << counts.labelled << " of " << counts.planar_holes;
 }
 
+// IGES parts whose faces are not sewn into a shell (written face by face, as many part
+// libraries' IGES files are) are sewn, then punched, and their labels pass the same check; each
+// model's note says it was sewn.
+TEST(BrepFileCases, UnsewnIgesPartsAreSewnPunchedAndLabelled) {
+  const auto dir = occt::test::fresh_temp_dir("brep_file_unsewn");
+  for (const auto& part : occt::test::test_parts())
+    occt::test::write_iges_unsewn(part.shape, dir / (part.name + ".igs"));
+  const CaseCatalog catalog(user_files_only(dir));
+  EXPECT_TRUE(catalog.skipped().empty());
+  ASSERT_EQ(catalog.model_notes().size(), occt::test::test_parts().size());
+  for (const auto& note : catalog.model_notes())
+    EXPECT_NE(note.note.find("sewn with OpenCASCADE's BRepBuilderAPI_Sewing"), std::string::npos)
+        << note.name << ": " << note.note;
+  const PlanarHoleLabels counts = check_planar_hole_labels(dir);
+  EXPECT_GE(counts.planar_holes, 20);
+  EXPECT_GE(counts.labelled, 0.9 * counts.planar_holes)
+      << counts.labelled << " of " << counts.planar_holes;
+}
+
 // The same check on a folder of your own B-Rep files (for example the KiCad subset of
 // scripts/fetch_kicad_subset.sh), named by HOLEBENCH_LABEL_CHECK_DIR; skipped without it,
 // since CI has no such folder. Prints the count.

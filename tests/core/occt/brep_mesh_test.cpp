@@ -218,6 +218,33 @@ TEST(BrepMesh, IgesAndBrepFilesReadLikeStep) {
   }
 }
 
+// IGES faces that were never sewn into a shell (each face with edges of its own, as many part
+// libraries' IGES files hold them) are sewn before tessellation: the mesh is closed, with one
+// region per face, and the mesh's notes say so. Without sewing the same file is open along
+// every B-Rep edge.
+TEST(BrepMesh, UnsewnIgesFacesAreSewnWithANote) {
+  const auto dir = test::fresh_temp_dir("brep_mesh_unsewn");
+  const TopoDS_Shape block = test::block_with_pocket_and_hole();
+  test::write_iges_unsewn(block, dir / "block.igs");
+  const BrepMesh sewn = read_brep_mesh(dir / "block.igs");
+  EXPECT_TRUE(find_boundary_loops(sewn.mesh).empty());
+  EXPECT_EQ(region_count(sewn.mesh), brep_face_count(block));
+  ASSERT_EQ(sewn.notes.size(), 1u);
+  EXPECT_NE(sewn.notes[0].find("not sewn into a shell"), std::string::npos) << sewn.notes[0];
+  EXPECT_NE(sewn.notes[0].find(": 0 free edges left"), std::string::npos) << sewn.notes[0];
+
+  TessellationOptions unsewn_options;
+  unsewn_options.sewing_tolerance_rel_diag = 0.0;
+  const BrepMesh unsewn = read_brep_mesh(dir / "block.igs", unsewn_options);
+  EXPECT_GE(find_boundary_loops(unsewn.mesh).size(),
+            static_cast<std::size_t>(brep_face_count(block)));
+  EXPECT_TRUE(unsewn.notes.empty());
+
+  // A sewn file is not sewn again: no note, the faces in the file's order.
+  test::write_iges(block, dir / "solid.igs");
+  EXPECT_TRUE(read_brep_mesh(dir / "solid.igs").notes.empty());
+}
+
 // The message of the InvalidInputError reading `path` throws ("" if none), with nothing
 // written to stdout.
 std::string read_error(const std::filesystem::path& path) {
@@ -320,7 +347,10 @@ TEST(BrepMesh, AFaceThatDoesNotTessellateIsNamed) {
   ASSERT_TRUE(BRepTools::Write(compound, file.string().c_str()));
   const std::string message = read_error(file);
   EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
-  EXPECT_NE(message.find("B-Rep face 6 did not tessellate"), std::string::npos) << message;
+  EXPECT_NE(message.find("B-Rep face 6 did not tessellate (tried at a linear deflection of 0.001 "
+                         "of the diagonal and 0.25, 4 times it)"),
+            std::string::npos)
+      << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 

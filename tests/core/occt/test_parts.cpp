@@ -2,6 +2,7 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
@@ -124,6 +125,19 @@ void write_iges(const TopoDS_Shape& shape, const std::filesystem::path& path) {
   IGESControl_Writer writer("MM", /*modecr=*/1);  // 1: B-Rep entities (MSBO)
   if (!writer.AddShape(shape))
     throw std::runtime_error("cannot convert the shape to IGES for " + path.string());
+  writer.ComputeModel();
+  if (!writer.Write(path.c_str()))
+    throw std::runtime_error("cannot write IGES file " + path.string());
+}
+
+void write_iges_unsewn(const TopoDS_Shape& shape, const std::filesystem::path& path) {
+  IGESControl_Writer writer("MM", /*modecr=*/0);  // 0: faces (trimmed surfaces, entity 144)
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+    // A copy of the face alone has edges and vertices of its own, shared with no other face.
+    const TopoDS_Shape face = BRepBuilderAPI_Copy(it.Current()).Shape();
+    if (!writer.AddShape(face))
+      throw std::runtime_error("cannot convert a face to IGES for " + path.string());
+  }
   writer.ComputeModel();
   if (!writer.Write(path.c_str()))
     throw std::runtime_error("cannot write IGES file " + path.string());

@@ -50,6 +50,11 @@ void write_step(const TopoDS_Shape& shape, const std::filesystem::path& path);
 /// Writes `shape` as IGES with B-Rep entities (a solid, not loose faces); throws on failure.
 void write_iges(const TopoDS_Shape& shape, const std::filesystem::path& path);
 
+/// Writes each face of `shape` as its own IGES trimmed surface (entity 144), with edges shared
+/// with no other face: the faces are not sewn into a shell, as in the IGES files of many CAD
+/// part libraries. Throws on failure.
+void write_iges_unsewn(const TopoDS_Shape& shape, const std::filesystem::path& path);
+
 /// A fresh folder below the system's temporary folder, named after `name`.
 std::filesystem::path fresh_temp_dir(const std::string& name);
 
