@@ -47,6 +47,15 @@ struct Case {
   CaseParameters parameters;   ///< settings a method may be given
   Mesh complete;               ///< the complete, clean model (ground truth)
   std::vector<HoleTruth> holes;
+  /// False for a real hole (generators/real_holes.h, file/<stem>/hole/<i>): `complete` is the
+  /// open mesh itself, no hole has removed faces, and the evaluation reports only the metrics
+  /// that need no ground truth (metrics/patch_quality.h).
+  bool has_ground_truth = true;
+  /// True for a ring-removal case (file/<stem>/hole/<i>/rings-<r>): the truth is the rings
+  /// around a real hole, which the complete model still has open, so the patch's distance to
+  /// the complete model over that hole measures the hole's size, not the repair; the
+  /// evaluation adds the truth-to-repair direction alone (ring_* metrics).
+  bool truth_surrounds_a_real_hole = false;
 };
 
 }  // namespace holebench

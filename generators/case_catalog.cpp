@@ -1,5 +1,6 @@
 #include "generators/case_catalog.h"
 
+#include "core/boundary_loops.h"
 #include "core/errors.h"
 #include "core/geometry.h"
 #include "generators/box_holes.h"
@@ -10,6 +11,7 @@
 #include "generators/procedural_solids.h"
 #include "generators/punched_case.h"
 #include "generators/random.h"
+#include "generators/real_holes.h"
 #include "generators/vertex_noise.h"
 
 #include <fmt/format.h>
@@ -55,6 +57,8 @@ struct CaseCatalog::State {
   mutable std::vector<CaseDescriptor> descriptors;
   mutable std::vector<SkippedModel> skipped;
   mutable std::vector<ModelNote> model_notes;
+  mutable std::mutex open_meshes_mutex;
+  mutable std::map<std::string, std::shared_ptr<const ModelMesh>> open_meshes;
   void add(CaseDescriptor descriptor) const { descriptors.push_back(std::move(descriptor)); }
 
   static Case make_punched(const AnalysedModel& model, const PunchTarget& target,
@@ -78,6 +82,12 @@ struct CaseCatalog::State {
     std::shared_ptr<const AnalysedModel> model;
     try {
       model = load();
+    } catch (const OpenMeshError& e) {
+      if (family == "file")
+        add_real_holes(name);
+      else
+        skipped.push_back({family + "/" + name, e.what()});
+      return;
     } catch (const std::exception& e) {
       skipped.push_back({family + "/" + name, e.what()});
       return;
@@ -106,6 +116,89 @@ struct CaseCatalog::State {
                          removal.combo)});
       }
     }
+  }
+
+  // The open mesh of a user's file, as read (cached: listing and making read it once).
+  std::shared_ptr<const ModelMesh> open_mesh(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(open_meshes_mutex);
+    if (auto it = open_meshes.find(name); it != open_meshes.end())
+      return it->second;
+    for (const auto& source : user_mesh_sources(options.user_meshes)) {
+      if (source.name != name)
+        continue;
+      auto mesh = std::make_shared<const ModelMesh>(read_model_mesh(source, options.prepare));
+      open_meshes.emplace(name, mesh);
+      return mesh;
+    }
+    return nullptr;
+  }
+
+  // An open mesh's real holes (real_holes.h): each as it is and enlarged by its rings.
+  void add_real_holes(const std::string& name) const {
+    const std::string model = "file/" + name;
+    std::shared_ptr<const ModelMesh> read;
+    try {
+      read = open_mesh(name);
+    } catch (const std::exception& e) {
+      skipped.push_back({model, e.what()});
+      return;
+    }
+    for (const auto& note : read->notes)
+      model_notes.push_back({model, note});
+    const MeshLoops loops = classify_boundary_loops(read->mesh);
+    if (loops.holes.empty()) {
+      skipped.push_back({model, fmt::format("an open sheet: its {} boundary loop{} {} its border, "
+                                            "not a hole (docs/generators.md, \"Real holes\")",
+                                            loops.sheet_borders.size(),
+                                            loops.sheet_borders.size() == 1 ? "" : "s",
+                                            loops.sheet_borders.size() == 1 ? "is" : "are")});
+      return;
+    }
+    model_notes.push_back(
+        {model,
+         fmt::format("an open mesh: {} real hole{} (cases {}/hole/<i>, no ground truth, "
+                     "and enlarged by 1, 2, 4 rings of faces), {} sheet border{} left open",
+                     loops.holes.size(), loops.holes.size() == 1 ? "" : "s", model,
+                     loops.sheet_borders.size(), loops.sheet_borders.size() == 1 ? "" : "s")});
+    for (std::size_t i = 0; i < loops.holes.size(); ++i) {
+      add({fmt::format("{}/hole/{}", model, i), "file", "real_hole",
+           fmt::format("file {}, real hole {} (no ground truth)", name, i)});
+      for (int rings : ring_removal_counts()) {
+        add({fmt::format("{}/hole/{}/rings-{}", model, i, rings), "file",
+             fmt::format("rings-{}", rings),
+             fmt::format("file {}, real hole {} enlarged by {} ring{} of faces (truth: the rings)",
+                         name, i, rings, rings == 1 ? "" : "s")});
+      }
+    }
+  }
+
+  std::optional<Case> make_real_hole(const CaseId& id) const {
+    if (id.family != "file")
+      return std::nullopt;
+    int hole = -1;
+    int rings = 0;
+    try {
+      std::size_t used = 0;
+      hole = std::stoi(id.target, &used);
+      if (used != id.target.size())
+        return std::nullopt;
+      if (!id.size.empty()) {
+        if (id.size.rfind("rings-", 0) != 0)
+          return std::nullopt;
+        rings = std::stoi(id.size.substr(6), &used);
+        if (used != id.size.size() - 6 || rings < 1)
+          return std::nullopt;
+      }
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+    const std::shared_ptr<const ModelMesh> read = open_mesh(id.model);
+    if (!read)
+      return std::nullopt;
+    if (find_boundary_loops(read->mesh).empty())
+      throw InvalidInputError("file/" + id.model + " is closed: it has no real hole");
+    return rings == 0 ? make_real_hole_case(read->mesh, hole, id.text)
+                      : make_ring_removal_case(read->mesh, hole, rings, id.text);
   }
 
   // The loader of the model a punched id names, without listing the other families.
@@ -158,6 +251,10 @@ struct CaseCatalog::State {
         }
         case CaseIdKind::Punched:
           if (auto c = make_punched_by_id(*id))
+            return std::move(*c);
+          break;
+        case CaseIdKind::RealHole:
+          if (auto c = make_real_hole(*id))
             return std::move(*c);
           break;
       }

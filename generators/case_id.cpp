@@ -26,6 +26,13 @@ std::optional<CaseId> parse_case_id(const std::string& text) {
     id.target = parts[2];
     return id;
   }
+  if (id.family == "file" && (parts.size() == 4 || parts.size() == 5) && parts[2] == "hole") {
+    id.kind = CaseIdKind::RealHole;
+    id.model = parts[1];
+    id.target = parts[3];
+    id.size = parts.size() == 5 ? parts[4] : "";
+    return id;
+  }
   const bool punched_family = id.family == "solid" || id.family == "cad" || id.family == "file";
   if (!punched_family || parts.size() != 4)
     return std::nullopt;

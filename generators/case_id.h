@@ -7,6 +7,8 @@
 //   crease/<model>/<creases>           creases: 1, 2, 3 or concave_corner
 //   solid|cad|file/<model>/<target>/<size>   a punched hole; size: a punch_size_classes() name
 //   file/<model>/faces/<face set>      whole B-Rep faces removed (face_removal.h)
+//   file/<model>/hole/<i>[/rings-<r>]  an open mesh's real hole i, as it is or enlarged by r
+//                                      rings (real_holes.h)
 #pragma once
 
 #include <optional>
@@ -20,6 +22,7 @@ enum class CaseIdKind {
   Crease,        ///< crease/<model>/<creases>
   Punched,       ///< <solid|cad|file>/<model>/<target>/<size>
   FacesRemoved,  ///< file/<model>/faces/<face set>
+  RealHole,      ///< file/<model>/hole/<i>[/rings-<r>] (real_holes.h)
 };
 
 struct CaseId {
@@ -28,9 +31,12 @@ struct CaseId {
   std::string family;  ///< its first field: box, brep, crease, solid, cad, file
   std::string model;   ///< the model's name (crease, punched, faces removed); else empty
   /// box: the box hole's target; punched: the punch target's kind (punch_targets.h); crease:
-  /// "1", "2", "3" or "concave_corner"; faces removed: the face set's name; brep: empty.
+  /// "1", "2", "3" or "concave_corner"; faces removed: the face set's name; real hole: its
+  /// index; brep: empty.
   std::string target;
-  std::string size;  ///< punched: the size class's name ("small", "large"); else empty
+  /// punched: the size class's name ("small", "large"); real hole: "rings-<r>" or empty;
+  /// else empty
+  std::string size;
 };
 
 /// Parses `text` by the shapes above. Returns nothing where the text has none of them (a

@@ -13,6 +13,7 @@
 #include "metrics/kept_faces.h"
 #include "metrics/literature_metrics.h"
 #include "metrics/metric_names.h"
+#include "metrics/patch_quality.h"
 #include "metrics/shared_faces.h"
 #include "metrics/surface_distance.h"
 #include "metrics/validity.h"
@@ -267,6 +268,11 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
     out.add(kHoleHausdorffUpperRelDiag, hole.summary.hausdorff.upper / diagonal);
     add_interval(out, kHoleMeanDistance, hole.summary.mean, diagonal);
     add_interval(out, kHoleRmsDistance, hole.summary.rms, diagonal);
+    if (c.truth_surrounds_a_real_hole) {
+      out.add(kRingHausdorffRelDiag, hole.truth_to_repaired.hausdorff.lower / diagonal);
+      out.add(kRingHausdorffUpperRelDiag, hole.truth_to_repaired.hausdorff.upper / diagonal);
+      add_interval(out, kRingMeanDistance, hole.truth_to_repaired.mean, diagonal);
+    }
     if (hole.patch_to_complete) {
       add_chamfer(out, kHoleChamferL1, kHoleChamferL2,
                   chamfer_distance(*hole.patch_to_complete, hole.truth_to_repaired), diagonal);
@@ -505,6 +511,27 @@ std::unique_ptr<embree::TriangleScene> repaired_scene_of(const Mesh& repaired,
   return std::make_unique<embree::TriangleScene>(repaired);
 }
 
+// A real hole's metrics (no ground truth): the patch's quality, the validity, the fallbacks.
+void add_no_truth_metrics(const Case& c, const MethodResult& result,
+                          const EvaluationOptions& options, double diagonal, Recorder& out,
+                          PhaseLaps& laps) {
+  const PatchQuality q = patch_quality(result.repaired);
+  const auto add = [&out](const char* name, const std::optional<double>& value) {
+    if (value)
+      out.add(name, *value);
+  };
+  add(kPatchBoundaryNormalJumpMeanDeg, q.boundary_normal_jump_mean_deg);
+  add(kPatchBoundaryNormalJumpMaxDeg, q.boundary_normal_jump_max_deg);
+  add(kPatchDihedralMeanDeg, q.dihedral_mean_deg);
+  add(kPatchDihedralMaxDeg, q.dihedral_max_deg);
+  add(kPatchTriangleQualityMinFraction, q.triangle_quality_min);
+  add(kPatchTriangleQualityMeanFraction, q.triangle_quality_mean);
+  laps.lap(evaluation_phases::kPatchQuality);
+  add_validity(c, result, options, diagonal, nullptr, nullptr, nullptr, out);
+  laps.lap(evaluation_phases::kValidity);
+  add_fallbacks(result, out);
+}
+
 // The metrics, with what the case's jobs share given (`shared`) or made here.
 Evaluation evaluate_with(const Case& c, const MethodResult& result,
                          const EvaluationOptions& options, const CaseEvaluation* shared) {
@@ -515,6 +542,10 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
   const double diagonal = bounding_box_diagonal(c.complete);
   if (!(diagonal > 0.0) || c.complete.n_faces() == 0)
     return evaluation;  // no ground truth to measure against
+  if (!c.has_ground_truth) {
+    add_no_truth_metrics(c, result, options, diagonal, out, laps);
+    return evaluation;
+  }
   std::unique_ptr<embree::TriangleScene> own_complete_scene;
   if (!shared_complete_scene) {
     own_complete_scene = std::make_unique<embree::TriangleScene>(c.complete);

@@ -88,6 +88,7 @@ constexpr const char* kNewVertexError = "new_vertex_error";
 /// The literature's sampled metrics (F-score, normal consistency, edge Chamfer distance).
 constexpr const char* kLiteratureMetrics = "literature_metrics";
 constexpr const char* kFeatureRecovery = "feature_recovery";
+constexpr const char* kPatchQuality = "patch_quality";  ///< real holes only
 constexpr const char* kValidity = "validity";
 constexpr const char* kClassification = "classification";
 constexpr const char* kArrowVisibility = "arrow_visibility";

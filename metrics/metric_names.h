@@ -53,6 +53,20 @@ inline constexpr char kMissingEdgeCoveredFraction[] = "missing_edge_covered_frac
 inline constexpr char kMissingEdgeDistanceMaxRelDiag[] = "missing_edge_distance_max_rel_diag";
 inline constexpr char kPatchNormalDeviationMeanDeg[] = "patch_normal_deviation_mean_deg";
 inline constexpr char kPatchNormalDeviationMaxDeg[] = "patch_normal_deviation_max_deg";
+// Ring-removal cases (generators/real_holes.h): the removed rings against the repair, the one
+// direction the real hole left open in the complete model does not bias.
+inline constexpr char kRingHausdorffRelDiag[] = "ring_hausdorff_rel_diag";
+inline constexpr char kRingHausdorffUpperRelDiag[] = "ring_hausdorff_upper_rel_diag";
+inline constexpr char kRingMeanDistanceRelDiag[] = "ring_mean_distance_rel_diag";
+inline constexpr char kRingMeanDistanceLowerRelDiag[] = "ring_mean_distance_lower_rel_diag";
+inline constexpr char kRingMeanDistanceUpperRelDiag[] = "ring_mean_distance_upper_rel_diag";
+// Real holes (no ground truth: metrics/patch_quality.h).
+inline constexpr char kPatchBoundaryNormalJumpMeanDeg[] = "patch_boundary_normal_jump_mean_deg";
+inline constexpr char kPatchBoundaryNormalJumpMaxDeg[] = "patch_boundary_normal_jump_max_deg";
+inline constexpr char kPatchDihedralMeanDeg[] = "patch_dihedral_mean_deg";
+inline constexpr char kPatchDihedralMaxDeg[] = "patch_dihedral_max_deg";
+inline constexpr char kPatchTriangleQualityMinFraction[] = "patch_triangle_quality_min_fraction";
+inline constexpr char kPatchTriangleQualityMeanFraction[] = "patch_triangle_quality_mean_fraction";
 inline constexpr char kOpenBoundaryLoopsCount[] = "open_boundary_loops_count";
 inline constexpr char kIsClosed[] = "is_closed";
 inline constexpr char kNonManifoldVerticesCount[] = "non_manifold_vertices_count";
@@ -107,6 +121,8 @@ inline constexpr IntervalNames kMeanDistance{kMeanDistanceRelDiag, kMeanDistance
                                              kMeanDistanceUpperRelDiag};
 inline constexpr IntervalNames kRmsDistance{kRmsDistanceRelDiag, kRmsDistanceLowerRelDiag,
                                             kRmsDistanceUpperRelDiag};
+inline constexpr IntervalNames kRingMeanDistance{
+    kRingMeanDistanceRelDiag, kRingMeanDistanceLowerRelDiag, kRingMeanDistanceUpperRelDiag};
 inline constexpr IntervalNames kHoleMeanDistance{
     kHoleMeanDistanceRelDiag, kHoleMeanDistanceLowerRelDiag, kHoleMeanDistanceUpperRelDiag};
 inline constexpr IntervalNames kHoleRmsDistance{

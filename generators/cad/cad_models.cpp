@@ -64,6 +64,19 @@ std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem:
   return sources;
 }
 
+ModelMesh read_model_mesh(const CadModelSource& source, const PrepareOptions& options) {
+  ModelMesh read;
+  read.brep = occt::is_brep_file(source.path);
+  if (read.brep) {
+    occt::BrepMesh brep_mesh = occt::read_brep_mesh(source.path, options.tessellation);
+    read.mesh = std::move(brep_mesh.mesh);
+    read.notes = std::move(brep_mesh.notes);
+  } else {
+    read.mesh = read_mesh(source.path);
+  }
+  return read;
+}
+
 std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& source,
                                                        const PrepareOptions& options) {
   static std::mutex mutex;
@@ -81,19 +94,12 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   }
   // A B-Rep model's regions are its faces: they are kept through remeshing and used instead
   // of a segmentation, so its labels come from the B-Rep's faces.
-  const bool brep = occt::is_brep_file(source.path);
-  std::vector<std::string> notes;
-  Mesh mesh;
-  if (brep) {
-    occt::BrepMesh brep_mesh = occt::read_brep_mesh(source.path, options.tessellation);
-    mesh = std::move(brep_mesh.mesh);
-    notes = std::move(brep_mesh.notes);
-  } else {
-    mesh = read_mesh(source.path);
-  }
+  ModelMesh read = read_model_mesh(source, options);
+  const bool brep = read.brep;
+  Mesh& mesh = read.mesh;
   const auto loops = find_boundary_loops(mesh);
   if (!loops.empty()) {
-    throw InvalidInputError(
+    throw OpenMeshError(
         fmt::format("{}: the mesh is open ({} boundary loops); holes are "
                     "punched into closed models only",
                     source.path.string(), loops.size()));
@@ -107,7 +113,7 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   features.regions_from_mesh = brep;
   AnalysedModel analysed = analyse_model(source.name, remesh_isotropic(mesh, remesh), features);
   analysed.regions_are_brep_faces = brep;
-  analysed.notes = std::move(notes);
+  analysed.notes = std::move(read.notes);
   auto model = std::make_shared<const AnalysedModel>(std::move(analysed));
   std::lock_guard<std::mutex> lock(mutex);
   cache.emplace(key, model);

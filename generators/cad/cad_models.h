@@ -2,6 +2,7 @@
 // mesh files, prepared for punching (closed check, isotropic remeshing, segmentation).
 #pragma once
 
+#include "core/errors.h"
 #include "core/occt/brep_mesh.h"
 #include "generators/punch_targets.h"
 
@@ -30,18 +31,34 @@ std::vector<CadModelSource> cgal_cad_models(const std::filesystem::path& data_di
 /// BREP) or folders (every such file in it, sorted by name).
 std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem::path>& paths);
 
+/// prepare_cad_model's error for an open mesh: its holes are real holes (generators/real_holes.h),
+/// which the catalog makes cases of instead of punching.
+class OpenMeshError : public InvalidInputError {
+ public:
+  using InvalidInputError::InvalidInputError;
+};
+
 struct PrepareOptions {
   double target_edge_length_rel_diag = 0.01;  ///< remeshing target, relative to the diagonal
   double sharp_angle_degrees = 30.0;
   occt::TessellationOptions tessellation;  ///< for B-Rep files (STEP, IGES, BREP)
 };
 
+/// A model file as read, before any check or remeshing: a B-Rep file by occt::read_brep_mesh
+/// (with its notes: faces sewn, a deflection retried), a mesh file by read_mesh.
+struct ModelMesh {
+  Mesh mesh;
+  std::vector<std::string> notes;
+  bool brep = false;
+};
+ModelMesh read_model_mesh(const CadModelSource& source, const PrepareOptions& options = {});
+
 /// Reads (a B-Rep file by occt::read_brep_mesh, a mesh file by read_mesh), checks (closed: holes
 /// are punched into complete models) and remeshes a model, then segments it and finds its
 /// features. A B-Rep model is not segmented: its faces, kept through the remeshing, are its
-/// regions. Throws InvalidInputError with the reason for a missing, open, non-manifold or
-/// degenerate mesh. Results are cached per path and options for the process, so listing and
-/// making cases analyse each model once.
+/// regions. Throws OpenMeshError for an open mesh and InvalidInputError with the reason for a
+/// missing, non-manifold or degenerate one. Results are cached per path and options for the
+/// process, so listing and making cases analyse each model once.
 std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& source,
                                                        const PrepareOptions& options = {});
 

@@ -6,7 +6,9 @@ void add_catalog_flags(CLI::App* command, generators::CatalogOptions& catalog, b
   command
       ->add_option("--mesh", catalog.user_meshes,
                    "Your own mesh or B-Rep file or folder (OFF/OBJ/STL/PLY, STEP/IGES/BREP), "
-                   "punched like the CAD models; repeatable. Its cases are file/<stem>/...")
+                   "punched like the CAD models; an open mesh gives its real holes instead "
+                   "(file/<stem>/hole/<i>, no ground truth, and .../rings-<r> with its rings "
+                   "removed as truth); repeatable. Its cases are file/<stem>/...")
       ->check(CLI::ExistingPath);
   command
       ->add_option("--brep-deflection", catalog.prepare.tessellation.linear_deflection_rel_diag,

@@ -19,6 +19,8 @@ nlohmann::ordered_json case_to_json(const Case& c) {
   j["seed"] = c.seed;
   j["noise_percent"] = c.noise_percent;
   j["complete_bounding_box_diagonal"] = bounding_box_diagonal(c.complete);
+  if (!c.has_ground_truth)
+    j["has_ground_truth"] = false;  // a real hole: "complete" is the open mesh itself
   auto& holes = j["holes"] = nlohmann::ordered_json::array();
   for (const auto& hole : c.holes) {
     nlohmann::ordered_json h;

@@ -70,9 +70,11 @@ TEST(BrepFileCases, StepPartsArePunchedAndBadStepFilesSkipped) {
     EXPECT_EQ(a.input.point(v), b.input.point(b.input.vertex_handle(v.idx())));
 }
 
-// An open shell (a box with one face missing: a surface model, not a solid) is skipped with
-// its reason, and the part beside it still gives its cases.
-TEST(BrepFileCases, AnOpenShellIsSkippedWithItsReason) {
+// An open shell (a box with one face missing: a surface model, not a solid) is not skipped: its
+// missing face is a real hole (generators/real_holes.h), a case as it is and with its rings
+// removed; the part beside it still gives its punched cases. Its four free edges were offered to
+// sewing, which left them free, and the notes say so.
+TEST(BrepFileCases, AnOpenShellGivesItsRealHole) {
   const auto dir = occt::test::fresh_temp_dir("brep_file_open_shell");
   occt::test::write_step(occt::test::block_with_pocket_and_hole(), dir / "block.step");
   TopoDS_Shell open_box;
@@ -86,14 +88,28 @@ TEST(BrepFileCases, AnOpenShellIsSkippedWithItsReason) {
   }
   ASSERT_TRUE(BRepTools::Write(open_box, (dir / "open_box.brep").c_str()));
   const CaseCatalog catalog(user_files_only(dir));
-  ASSERT_EQ(catalog.skipped().size(), 1u);
-  EXPECT_EQ(catalog.skipped()[0].name, "file/open_box");
-  EXPECT_EQ(catalog.skipped()[0].reason,
-            (dir / "open_box.brep").string() +
-                ": the mesh is open (1 boundary loops); holes are punched into closed models only");
-  EXPECT_FALSE(catalog.cases().empty());
-  for (const auto& c : catalog.cases())
-    EXPECT_EQ(c.id.rfind("file/block/", 0), 0u) << c.id;
+  EXPECT_TRUE(catalog.skipped().empty());
+  std::vector<std::string> real_holes;
+  for (const auto& c : catalog.cases()) {
+    if (c.id.rfind("file/open_box/", 0) == 0)
+      real_holes.push_back(c.id);
+    else
+      EXPECT_EQ(c.id.rfind("file/block/", 0), 0u) << c.id;
+  }
+  EXPECT_EQ(real_holes, (std::vector<std::string>{
+                            "file/open_box/hole/0", "file/open_box/hole/0/rings-1",
+                            "file/open_box/hole/0/rings-2", "file/open_box/hole/0/rings-4"}));
+  std::vector<std::string> notes;
+  for (const auto& note : catalog.model_notes())
+    notes.push_back(note.name + ": " + note.note);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_NE(notes[0].find("file/open_box: its faces were not sewn into a shell (4 free edges)"),
+            std::string::npos)
+      << notes[0];
+  EXPECT_NE(notes[0].find(": 4 free edges left"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[1].find("file/open_box: an open mesh: 1 real hole"), std::string::npos)
+      << notes[1];
+  EXPECT_FALSE(catalog.make("file/open_box/hole/0").has_ground_truth);
 }
 
 // The input of a hole punched into a B-Rep file keeps the B-Rep's face ids (the B-Rep
