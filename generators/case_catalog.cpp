@@ -160,10 +160,15 @@ struct CaseCatalog::State {
                      "and enlarged by 1, 2, 4 rings of faces), {} sheet border{} left open",
                      loops.holes.size(), loops.holes.size() == 1 ? "" : "s", model,
                      loops.sheet_borders.size(), loops.sheet_borders.size() == 1 ? "" : "s")});
+    const std::vector<BoundaryLoop> all_loops = find_boundary_loops(read->mesh);
     for (std::size_t i = 0; i < loops.holes.size(); ++i) {
       add({fmt::format("{}/hole/{}", model, i), "file", "real_hole",
            fmt::format("file {}, real hole {} (no ground truth)", name, i)});
+      const BoundaryLoop& loop = all_loops[static_cast<std::size_t>(loops.holes[i])];
       for (int rings : ring_removal_counts()) {
+        // Rings that take every face of a small mesh leave nothing to fill: not listed.
+        if (faces_around_loop(read->mesh, loop, rings).size() >= read->mesh.n_faces())
+          continue;
         add({fmt::format("{}/hole/{}/rings-{}", model, i, rings), "file",
              fmt::format("rings-{}", rings),
              fmt::format("file {}, real hole {} enlarged by {} ring{} of faces (truth: the rings)",

@@ -96,9 +96,10 @@ TEST(BrepFileCases, AnOpenShellGivesItsRealHole) {
     else
       EXPECT_EQ(c.id.rfind("file/block/", 0), 0u) << c.id;
   }
-  EXPECT_EQ(real_holes, (std::vector<std::string>{
-                            "file/open_box/hole/0", "file/open_box/hole/0/rings-1",
-                            "file/open_box/hole/0/rings-2", "file/open_box/hole/0/rings-4"}));
+  // Ten triangles: 2 or 4 rings around the missing face would take every face, so only one is
+  // listed.
+  EXPECT_EQ(real_holes,
+            (std::vector<std::string>{"file/open_box/hole/0", "file/open_box/hole/0/rings-1"}));
   std::vector<std::string> notes;
   for (const auto& note : catalog.model_notes())
     notes.push_back(note.name + ": " + note.note);
