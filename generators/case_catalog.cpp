@@ -84,7 +84,7 @@ struct CaseCatalog::State {
       model = load();
     } catch (const OpenMeshError& e) {
       if (family == "file")
-        add_real_holes(name);
+        add_real_holes(name, e.read());
       else
         skipped.push_back({family + "/" + name, e.what()});
       return;
@@ -118,11 +118,17 @@ struct CaseCatalog::State {
     }
   }
 
-  // The open mesh of a user's file, as read (cached: listing and making read it once).
-  std::shared_ptr<const ModelMesh> open_mesh(const std::string& name) const {
+  // The open mesh of a user's file, as read (cached: listing and making read it once; `known`,
+  // where given, is the mesh prepare_cad_model read and found open).
+  std::shared_ptr<const ModelMesh> open_mesh(
+      const std::string& name, std::shared_ptr<const ModelMesh> known = nullptr) const {
     std::lock_guard<std::mutex> lock(open_meshes_mutex);
     if (auto it = open_meshes.find(name); it != open_meshes.end())
       return it->second;
+    if (known) {
+      open_meshes.emplace(name, known);
+      return known;
+    }
     for (const auto& source : user_mesh_sources(options.user_meshes)) {
       if (source.name != name)
         continue;
@@ -134,15 +140,9 @@ struct CaseCatalog::State {
   }
 
   // An open mesh's real holes (real_holes.h): each as it is and enlarged by its rings.
-  void add_real_holes(const std::string& name) const {
+  void add_real_holes(const std::string& name, std::shared_ptr<const ModelMesh> known) const {
     const std::string model = "file/" + name;
-    std::shared_ptr<const ModelMesh> read;
-    try {
-      read = open_mesh(name);
-    } catch (const std::exception& e) {
-      skipped.push_back({model, e.what()});
-      return;
-    }
+    const std::shared_ptr<const ModelMesh> read = open_mesh(name, std::move(known));
     for (const auto& note : read->notes)
       model_notes.push_back({model, note});
     const MeshLoops loops = classify_boundary_loops(read->mesh);
@@ -160,11 +160,10 @@ struct CaseCatalog::State {
                      "and enlarged by 1, 2, 4 rings of faces), {} sheet border{} left open",
                      loops.holes.size(), loops.holes.size() == 1 ? "" : "s", model,
                      loops.sheet_borders.size(), loops.sheet_borders.size() == 1 ? "" : "s")});
-    const std::vector<BoundaryLoop> all_loops = find_boundary_loops(read->mesh);
     for (std::size_t i = 0; i < loops.holes.size(); ++i) {
       add({fmt::format("{}/hole/{}", model, i), "file", "real_hole",
            fmt::format("file {}, real hole {} (no ground truth)", name, i)});
-      const BoundaryLoop& loop = all_loops[static_cast<std::size_t>(loops.holes[i])];
+      const BoundaryLoop& loop = hole_loop(loops, static_cast<int>(i));
       for (int rings : ring_removal_counts()) {
         // Rings that take every face of a small mesh leave nothing to fill: not listed.
         if (faces_around_loop(read->mesh, loop, rings).size() >= read->mesh.n_faces())

@@ -42,15 +42,6 @@ double vector_area(const std::vector<Point>& loop) {
   return 0.5 * sum.norm();
 }
 
-const BoundaryLoop& hole_loop(const Mesh& mesh, const std::vector<BoundaryLoop>& loops,
-                              const MeshLoops& sorted, int hole) {
-  if (hole < 0 || hole >= static_cast<int>(sorted.holes.size())) {
-    throw std::invalid_argument("the mesh has " + std::to_string(sorted.holes.size()) +
-                                " holes; there is no hole " + std::to_string(hole));
-  }
-  return loops[static_cast<std::size_t>(sorted.holes[static_cast<std::size_t>(hole)])];
-}
-
 Case real_hole_case_shell(const Mesh& mesh, const std::string& id) {
   Case c;
   c.id = id;
@@ -67,6 +58,14 @@ const std::vector<int>& ring_removal_counts() {
   return counts;
 }
 
+const BoundaryLoop& hole_loop(const MeshLoops& loops, int hole) {
+  if (hole < 0 || hole >= static_cast<int>(loops.holes.size())) {
+    throw std::invalid_argument("the mesh has " + std::to_string(loops.holes.size()) +
+                                " holes; there is no hole " + std::to_string(hole));
+  }
+  return loops.loops[static_cast<std::size_t>(loops.holes[static_cast<std::size_t>(hole)])];
+}
+
 MeshLoops classify_boundary_loops(const Mesh& mesh) {
   int component_count = 0;
   const std::vector<int> component = face_components(mesh, component_count);
@@ -74,7 +73,8 @@ MeshLoops classify_boundary_loops(const Mesh& mesh) {
   for (auto f : mesh.faces())
     component_area[static_cast<std::size_t>(component[f.idx()])] += face_area(mesh, f);
   MeshLoops sorted;
-  const std::vector<BoundaryLoop> loops = find_boundary_loops(mesh);
+  sorted.loops = find_boundary_loops(mesh);
+  const std::vector<BoundaryLoop>& loops = sorted.loops;
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const FaceHandle face = mesh.face_handle(mesh.opposite_halfedge_handle(loops[i].halfedges[0]));
     const double area = component_area[static_cast<std::size_t>(component[face.idx()])];
@@ -116,9 +116,7 @@ std::vector<int> faces_around_loop(const Mesh& mesh, const BoundaryLoop& loop, i
 }
 
 Case make_real_hole_case(const Mesh& mesh, int hole, const std::string& id) {
-  const std::vector<BoundaryLoop> loops = find_boundary_loops(mesh);
-  const MeshLoops sorted = classify_boundary_loops(mesh);
-  hole_loop(mesh, loops, sorted, hole);
+  hole_loop(classify_boundary_loops(mesh), hole);  // throws where there is no such hole
   Case c = real_hole_case_shell(mesh, id);
   c.kind = "real_hole";
   c.has_ground_truth = false;
@@ -131,9 +129,8 @@ Case make_real_hole_case(const Mesh& mesh, int hole, const std::string& id) {
 }
 
 Case make_ring_removal_case(const Mesh& mesh, int hole, int rings, const std::string& id) {
-  const std::vector<BoundaryLoop> loops = find_boundary_loops(mesh);
-  const MeshLoops sorted = classify_boundary_loops(mesh);
-  const BoundaryLoop& loop = hole_loop(mesh, loops, sorted, hole);
+  const MeshLoops loops = classify_boundary_loops(mesh);
+  const BoundaryLoop& loop = hole_loop(loops, hole);
   Case c = real_hole_case_shell(mesh, id);
   c.kind = "rings-" + std::to_string(rings);
   c.truth_surrounds_a_real_hole = true;

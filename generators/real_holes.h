@@ -33,8 +33,9 @@ namespace holebench::generators {
 const std::vector<int>& ring_removal_counts();
 
 struct MeshLoops {
-  /// Indices into find_boundary_loops(mesh) of the loops that are holes, in that order:
-  /// hole i of the case ids is holes[i].
+  std::vector<BoundaryLoop> loops;  ///< find_boundary_loops(mesh)
+  /// Indices into `loops` of the loops that are holes, in that order: hole i of the case ids
+  /// is loops[holes[i]].
   std::vector<int> holes;
   /// ... and of the loops that are the border of an open sheet.
   std::vector<int> sheet_borders;
@@ -42,6 +43,10 @@ struct MeshLoops {
 
 /// The mesh's boundary loops sorted into holes and sheet borders (the rule in the file comment).
 MeshLoops classify_boundary_loops(const Mesh& mesh);
+
+/// The loop of hole `hole` (an index into MeshLoops::holes). Throws std::invalid_argument where
+/// there is no such hole.
+const BoundaryLoop& hole_loop(const MeshLoops& loops, int hole);
 
 /// The faces within `rings` rings of `loop`: ring 1 is the faces with a vertex on the loop,
 /// ring k + 1 adds the faces with a vertex on a face of ring k. Sorted face indices.

@@ -1,5 +1,7 @@
 #include "metrics/patch_quality.h"
 
+#include "core/geometry.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,21 +10,16 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
-double normal_angle_deg(const Mesh& mesh, FaceHandle a, FaceHandle b) {
-  const Point na = mesh.calc_face_normal(a), nb = mesh.calc_face_normal(b);
-  const double cosine = std::clamp(na | nb, -1.0, 1.0);  // OpenMesh: | is the dot product
-  return std::acos(cosine) * kDegreesPerRadian;
+// The angle between the normals of the two faces at `e` (0: coplanar), in degrees.
+double normal_angle_deg(const Mesh& mesh, EdgeHandle e) {
+  return std::abs(signed_dihedral_angle(mesh, e)) * kDegreesPerRadian;
 }
 
 double triangle_quality(const Mesh& mesh, FaceHandle f) {
-  Point p[3];
-  int k = 0;
-  for (auto v : mesh.fv_range(f))
-    p[k++] = mesh.point(v);
-  const double area = 0.5 * ((p[1] - p[0]) % (p[2] - p[0])).norm();
+  const auto p = face_corners(mesh, f);
   const double squares =
       (p[1] - p[0]).sqrnorm() + (p[2] - p[1]).sqrnorm() + (p[0] - p[2]).sqrnorm();
-  return squares > 0.0 ? 4.0 * std::sqrt(3.0) * area / squares : 0.0;
+  return squares > 0.0 ? 4.0 * std::sqrt(3.0) * face_area(mesh, f) / squares : 0.0;
 }
 
 struct Summary {
@@ -47,9 +44,9 @@ PatchQuality patch_quality(const Mesh& repaired) {
     const FaceHandle b = repaired.face_handle(repaired.halfedge_handle(e, 1));
     const bool a_new = is_new(repaired, a), b_new = is_new(repaired, b);
     if (a_new && b_new)
-      dihedral.add(normal_angle_deg(repaired, a, b));
+      dihedral.add(normal_angle_deg(repaired, e));
     else if (a_new || b_new)
-      jump.add(normal_angle_deg(repaired, a, b));
+      jump.add(normal_angle_deg(repaired, e));
   }
   for (auto f : repaired.faces()) {
     if (is_new(repaired, f))

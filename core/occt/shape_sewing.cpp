@@ -1,11 +1,10 @@
 #include "core/occt/shape_sewing.h"
 
 #include "core/errors.h"
+#include "core/occt/shape_tessellation.h"
 
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRep_Tool.hxx>
-#include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -16,16 +15,8 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
 namespace holebench::occt {
 namespace {
-
-double bounding_box_diagonal(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box, /*useTriangulation=*/false);
-  return box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
-}
 
 // The distinct faces in `faces` (an edge's ancestors list a face once per use).
 int distinct_faces(const TopTools_ListOfShape& faces) {
@@ -65,7 +56,7 @@ SewingResult sew_free_edges(const TopoDS_Shape& shape, double tolerance_rel_diag
   result.free_edges_after = result.free_edges_before;
   if (result.free_edges_before == 0)
     return result;
-  result.tolerance = tolerance_rel_diag * bounding_box_diagonal(shape);
+  result.tolerance = tolerance_rel_diag * exact_bounding_box_diagonal(shape);
   try {
     BRepBuilderAPI_Sewing sewing(result.tolerance);
     sewing.Add(shape);
@@ -78,7 +69,6 @@ SewingResult sew_free_edges(const TopoDS_Shape& shape, double tolerance_rel_diag
     throw InvalidInputError(fmt::format("{}: OpenCASCADE failed sewing its faces ({}: {})", source,
                                         e.DynamicType()->Name(), e.GetMessageString()));
   }
-  result.sewn = true;
   result.free_edges_after = count_free_edges(result.shape);
   result.note = fmt::format(
       "its faces were not sewn into a shell ({} free edges); sewn with OpenCASCADE's "

@@ -20,18 +20,18 @@ namespace holebench::occt {
 int count_free_edges(const TopoDS_Shape& shape);
 
 struct SewingResult {
-  TopoDS_Shape shape;  ///< the sewn shape, or the shape itself where nothing was sewn
-  bool sewn = false;   ///< sewing ran (the shape had free edges)
-  int free_edges_before = 0;
+  TopoDS_Shape shape;         ///< the sewn shape, or the shape itself where nothing was sewn
+  int free_edges_before = 0;  ///< sewing ran where this is not 0
   int free_edges_after = 0;
   double tolerance = 0.0;  ///< model units
   std::string note;        ///< what was done, for the model's notes; empty where nothing
 };
 
 /// Sews `shape` with BRepBuilderAPI_Sewing at `tolerance_rel_diag` times the diagonal of its
-/// bounding box where it has free edges (count_free_edges); a shape without free edges (a
-/// closed, sewn solid) is returned as it is, so its faces keep their order. The note says how
-/// many free edges there were before and after.
+/// exact bounding box (exact_bounding_box_diagonal, as the tessellation's deflection) where it has
+/// free edges (count_free_edges); a shape without free edges (a closed, sewn solid) is returned as
+/// it is, so its faces keep their order. The note says how many free edges there were before and
+/// after.
 SewingResult sew_free_edges(const TopoDS_Shape& shape, double tolerance_rel_diag,
                             const std::string& source);
 

@@ -50,12 +50,6 @@ SurfaceType surface_type(const TopoDS_Face& face) {
   }
 }
 
-double exact_bounding_box_diagonal(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
-  return box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
-}
-
 Point to_point(const gp_Pnt& p) {
   return Point(p.X(), p.Y(), p.Z());
 }
@@ -248,6 +242,12 @@ TessellatedSoup tessellate(const TopoDS_Shape& shape, const TessellationOptions&
 }
 
 }  // namespace
+
+double exact_bounding_box_diagonal(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+  return box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+}
 
 TessellatedSoup tessellate_shape_soup(const TopoDS_Shape& shape, const TessellationOptions& options,
                                       const std::string& source) {

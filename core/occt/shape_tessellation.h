@@ -35,6 +35,10 @@ namespace holebench::occt {
 BrepMesh tessellate_shape(const TopoDS_Shape& shape, const TessellationOptions& options,
                           const std::string& source = "<shape>");
 
+/// The diagonal of the shape's exact bounding box (BRepBndLib::AddOptimal, without the shapes'
+/// tolerances): what the deflection and the sewing tolerance are relative to. 0 for a void box.
+double exact_bounding_box_diagonal(const TopoDS_Shape& shape);
+
 /// The welded triangles before build_mesh, with the faces' surface types: what
 /// tessellate_shape builds its mesh from (build_mesh with mark_original and `source`).
 struct TessellatedSoup {

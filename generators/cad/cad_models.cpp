@@ -99,10 +99,10 @@ std::shared_ptr<const AnalysedModel> prepare_cad_model(const CadModelSource& sou
   Mesh& mesh = read.mesh;
   const auto loops = find_boundary_loops(mesh);
   if (!loops.empty()) {
-    throw OpenMeshError(
-        fmt::format("{}: the mesh is open ({} boundary loops); holes are "
-                    "punched into closed models only",
-                    source.path.string(), loops.size()));
+    throw OpenMeshError(fmt::format("{}: the mesh is open ({} boundary loops); holes are "
+                                    "punched into closed models only",
+                                    source.path.string(), loops.size()),
+                        std::make_shared<const ModelMesh>(std::move(read)));
   }
   RemeshOptions remesh;
   remesh.target_edge_length = options.target_edge_length_rel_diag * bounding_box_diagonal(mesh);

@@ -31,13 +31,6 @@ std::vector<CadModelSource> cgal_cad_models(const std::filesystem::path& data_di
 /// BREP) or folders (every such file in it, sorted by name).
 std::vector<CadModelSource> user_mesh_sources(const std::vector<std::filesystem::path>& paths);
 
-/// prepare_cad_model's error for an open mesh: its holes are real holes (generators/real_holes.h),
-/// which the catalog makes cases of instead of punching.
-class OpenMeshError : public InvalidInputError {
- public:
-  using InvalidInputError::InvalidInputError;
-};
-
 struct PrepareOptions {
   double target_edge_length_rel_diag = 0.01;  ///< remeshing target, relative to the diagonal
   double sharp_angle_degrees = 30.0;
@@ -52,6 +45,19 @@ struct ModelMesh {
   bool brep = false;
 };
 ModelMesh read_model_mesh(const CadModelSource& source, const PrepareOptions& options = {});
+
+/// prepare_cad_model's error for an open mesh: its holes are real holes (generators/real_holes.h),
+/// which the catalog makes cases of instead of punching. It carries the mesh as read, so that
+/// the file is not read again for them.
+class OpenMeshError : public InvalidInputError {
+ public:
+  OpenMeshError(const std::string& message, std::shared_ptr<const ModelMesh> read)
+      : InvalidInputError(message), read_(std::move(read)) {}
+  const std::shared_ptr<const ModelMesh>& read() const { return read_; }
+
+ private:
+  std::shared_ptr<const ModelMesh> read_;
+};
 
 /// Reads (a B-Rep file by occt::read_brep_mesh, a mesh file by read_mesh), checks (closed: holes
 /// are punched into complete models) and remeshes a model, then segments it and finds its

@@ -148,8 +148,10 @@ RunSummary run_jobs(const RunOptions& options) {
     std::filesystem::create_directories(job_options.snapshot_dir);
     png_writer.get();  // loaded once here, not in every job's process
   }
-  if (options.repaired_meshes)
+  if (options.repaired_meshes) {
     job_options.repaired_mesh_dir = options.out_dir / "repaired";
+    std::filesystem::create_directories(job_options.repaired_mesh_dir);
+  }
   if (options.scored_repairs)
     job_options.scored_repairs = &*options.scored_repairs;
   if (options.layers) {

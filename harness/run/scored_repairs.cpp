@@ -1,5 +1,6 @@
 #include "harness/run/scored_repairs.h"
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/mesh_io.h"
 #include "harness/outputs/file_bytes.h"
@@ -9,7 +10,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <stdexcept>
 #include <utility>
 
@@ -109,14 +109,10 @@ fs::path method_record_path(const fs::path& mesh_path) {
 
 void write_repaired_files(const fs::path& dir, const JobRecord& method_record,
                           const MethodResult& result) {
-  fs::create_directories(dir);
   const fs::path mesh_path = dir / (file_stem_of_id(method_record.job.id()) + ".ply");
   if (result.status != MethodStatus::Failed)
     write_mesh(result.repaired, mesh_path);
-  std::ofstream out(method_record_path(mesh_path));
-  out << record_to_json_line(method_record) << '\n';
-  if (!out)
-    throw std::runtime_error("cannot write " + method_record_path(mesh_path).string());
+  write_file_atomically(method_record_path(mesh_path), record_to_json_line(method_record) + '\n');
 }
 
 MethodResult read_scored_repair(const Job& job, const Mesh& holed, const ScoredRepairs& repairs,

@@ -40,7 +40,8 @@ std::vector<std::filesystem::path> repaired_mesh_candidates(const std::filesyste
 /// The side file of a repaired mesh: <mesh's stem>.method.json beside it.
 std::filesystem::path method_record_path(const std::filesystem::path& mesh_path);
 
-/// Writes what `run --repaired-meshes` keeps of a job whose method ran: <job stem>.ply (the
+/// Writes what `run --repaired-meshes` keeps of a job whose method ran, into the existing folder
+/// `dir`: <job stem>.ply (the
 /// repaired mesh, binary PLY with double coordinates and regions; not where the method failed)
 /// and <job stem>.method.json (`method_record`: the record before the evaluation).
 void write_repaired_files(const std::filesystem::path& dir, const JobRecord& method_record,
