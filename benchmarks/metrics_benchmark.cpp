@@ -10,6 +10,7 @@
 #include "harness/outputs/render/case_view.h"
 #include "harness/outputs/render/image.h"
 #include "harness/outputs/render/snapshot.h"
+#include "harness/run/heap_reuse.h"
 #include "harness/run/job.h"
 #include "methods/registry.h"
 #include "metrics/case_evaluation.h"
@@ -498,6 +499,9 @@ void register_methods() {
 }  // namespace holebench
 
 int main(int argc, char** argv) {
+  // The heap as a run's processes have it (harness/run/heap_reuse.h), so that the evaluation
+  // benchmarks time what a run's jobs spend.
+  holebench::harness::keep_freed_heap_memory();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv))
     return 1;

@@ -41,6 +41,13 @@ double face_area(const Mesh& mesh, FaceHandle f) {
   return 0.5 * OpenMesh::cross(b - a, c - a).norm();
 }
 
+std::vector<double> face_areas(const Mesh& mesh) {
+  std::vector<double> areas(mesh.n_faces(), 0.0);
+  for (auto f : mesh.faces())
+    areas[f.idx()] = face_area(mesh, f);
+  return areas;
+}
+
 Point face_centroid(const Mesh& mesh, FaceHandle f) {
   Point sum(0.0, 0.0, 0.0);
   for (auto v : mesh.fv_range(f))

@@ -4,6 +4,7 @@
 #include "core/mesh.h"
 
 #include <array>
+#include <vector>
 
 namespace holebench {
 
@@ -28,6 +29,8 @@ Point face_normal(const Mesh& mesh, FaceHandle f);
 
 /// Area of a face.
 double face_area(const Mesh& mesh, FaceHandle f);
+/// face_area() of every face, by face index (zero for a deleted face).
+std::vector<double> face_areas(const Mesh& mesh);
 
 /// Centroid of a face.
 Point face_centroid(const Mesh& mesh, FaceHandle f);

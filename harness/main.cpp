@@ -2,12 +2,11 @@
 // main() adds them and dispatches.
 #include "harness/cli/subcommands.h"
 #include "harness/results/output_folder_lock.h"
+#include "harness/run/heap_reuse.h"
 #include "harness/run/huge_page_heap.h"
 
 #include <CLI/CLI.hpp>
 #include <OpenMesh/Core/System/omstream.hh>
-
-#include <malloc.h>
 
 #include <cstdio>
 #include <cstring>
@@ -23,13 +22,8 @@ int main(int argc, char** argv) {
   // would be non-manifold; methods report such failures in their records instead.
   omerr().disable();
   omlog().disable();
-  // The distance searches grow and free large buffers (their cell queues) many times per
-  // job; by default glibc returns each to the system and the next one faults its pages in
-  // again. Large blocks are served from the heap instead, and freed memory kept (up to
-  // 1 GiB), which saves that; nothing else changes.
-  mallopt(M_MMAP_THRESHOLD, 256 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  mallopt(M_TOP_PAD, 64 << 20);
+  // Large blocks from the heap, freed memory kept (harness/run/heap_reuse.h).
+  holebench::harness::keep_freed_heap_memory();
   CLI::App app{
       "holebench: a benchmark and evaluation harness for hole filling on CAD meshes.\n"
       "Generates holed cases with ground truth, runs hole-filling methods on them,\n"

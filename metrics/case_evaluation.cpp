@@ -20,6 +20,10 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
         std::make_unique<MeanCellBounds>(c.input, *complete_scene_, input_pass, mean);
     input_hausdorff_bounds_ =
         std::make_unique<HausdorffCellBounds>(c.input, *complete_scene_, input_pass);
+    appended_repair_starts_ = std::make_unique<AppendedRepairStarts>(
+        c.input, c.complete, input_pass, shared_faces_of_input_->of_input());
+    input_face_areas_ = face_areas(c.input);
+    complete_face_areas_ = face_areas(c.complete);
     if (c.input.n_faces() > 0) {
       input_scene_ = std::make_unique<embree::TriangleScene>(c.input);
       complete_cell_bounds_ = std::make_unique<MeanCellBounds>(

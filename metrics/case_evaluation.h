@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/case.h"
+#include "metrics/appended_repair_starts.h"
 #include "metrics/evaluation.h"
 #include "metrics/input_topology.h"
 #include "metrics/surface_distance.h"
@@ -27,10 +28,11 @@ class CaseEvaluation {
   /// complete model (the faces a repair keeps need none of their own) and of the complete
   /// model's faces against the input (a repair is the input away from its new faces); the
   /// first bounds of the Hausdorff search of the input's faces against the complete model
-  /// (hausdorff_distance.h, HausdorffCellBounds); where `options` test self-intersections,
-  /// the input's own intersecting pairs (validity.h); and the input's topology, loop
-  /// centroids and nearest vertices to the missing corners, so that each job's validity,
-  /// hole matching and corner errors look at its changes only.
+  /// (hausdorff_distance.h, HausdorffCellBounds); where the searches of a repair that appends
+  /// to the input start (appended_repair_starts.h) and the faces' areas; where `options` test
+  /// self-intersections, the input's own intersecting pairs (validity.h); and the input's topology,
+  /// loop centroids and nearest vertices to the missing corners, so that each job's validity, hole
+  /// matching and corner errors look at its changes only.
   CaseEvaluation(const Case& c, const EvaluationOptions& options);
   ~CaseEvaluation();
   CaseEvaluation(const CaseEvaluation&) = delete;
@@ -47,6 +49,15 @@ class CaseEvaluation {
   const MeanCellBounds* input_cell_bounds() const { return input_cell_bounds_.get(); }
   /// The complete model's faces' first bounds against the input, or nullptr.
   const MeanCellBounds* complete_cell_bounds() const { return complete_cell_bounds_.get(); }
+  /// Where the whole model's searches of a repair that appends to the input start, or
+  /// nullptr where the case has no complete model.
+  const AppendedRepairStarts* appended_repair_starts() const {
+    return appended_repair_starts_.get();
+  }
+  /// The area of each input face and of each complete model's face (face_area(), by index),
+  /// for the sampled metrics, or empty where the case has no complete model.
+  const std::vector<double>& input_face_areas() const { return input_face_areas_; }
+  const std::vector<double>& complete_face_areas() const { return complete_face_areas_; }
   /// The input's faces' first Hausdorff bounds against the complete model, or nullptr.
   const HausdorffCellBounds* input_hausdorff_bounds() const {
     return input_hausdorff_bounds_.get();
@@ -72,6 +83,9 @@ class CaseEvaluation {
   std::unique_ptr<MeanCellBounds> input_cell_bounds_;
   std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
   std::unique_ptr<HausdorffCellBounds> input_hausdorff_bounds_;
+  std::unique_ptr<AppendedRepairStarts> appended_repair_starts_;
+  std::vector<double> input_face_areas_;
+  std::vector<double> complete_face_areas_;
   std::optional<InputSelfIntersections> input_self_intersections_;
   InputTopology input_topology_;
   std::vector<Point> input_loop_centroids_;

@@ -12,6 +12,7 @@
 #include "metrics/hole_matching.h"
 #include "metrics/kept_faces.h"
 #include "metrics/literature_metrics.h"
+#include "metrics/mean_search.h"
 #include "metrics/metric_names.h"
 #include "metrics/patch_quality.h"
 #include "metrics/shared_faces.h"
@@ -99,6 +100,10 @@ struct SharedFirstBounds {
   /// The faces the repair shares with the complete model, from the input's
   /// (SharedFacesOfInput), where the repair keeps the input so.
   std::optional<SharedFaces> repaired_shared_faces;
+  /// Where the searches of a repair that appends to the input start (with the repair's kept
+  /// faces), or null.
+  const AppendedRepairStarts* appended_starts = nullptr;
+  const KeptFaces* kept = nullptr;
 };
 SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
                                       const CaseEvaluation* shared, const KeptFaces* kept) {
@@ -116,6 +121,8 @@ SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
   if (kept && shared->shared_faces_of_input())
     first.repaired_shared_faces =
         shared->shared_faces_of_input()->of_repair(result.repaired, *kept);
+  first.appended_starts = shared->appended_repair_starts();
+  first.kept = kept;
   return first;
 }
 
@@ -242,9 +249,20 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
   laps.lap(evaluation_phases::kPatchMean);
   FirstBounds repaired_to_complete = first.repaired_to_complete;
   repaired_to_complete.steps = &patch_steps;
-  SurfaceDistance d = surface_distance(repaired, repaired_scene, c.complete, complete_scene, whole,
-                                       &repaired_to_complete, &first.complete_to_repaired,
-                                       std::move(first.repaired_shared_faces));
+  // Where the repair appends to the input, both searches start from the case's first passes
+  // (appended_repair_starts.h: the same starts, without a pass over the model).
+  std::optional<SearchStart> repaired_start, complete_start;
+  if (first.appended_starts && first.kept && first.repaired_shared_faces) {
+    repaired_start = first.appended_starts->repaired_to_complete(
+        repaired, *first.kept, *first.repaired_shared_faces, complete_scene);
+    complete_start = first.appended_starts->complete_to_repaired(
+        c.complete, repaired, *first.kept, *first.repaired_shared_faces, repaired_scene,
+        earlier_vertex_answers(c.complete, &first.complete_to_repaired));
+  }
+  SurfaceDistance d = surface_distance(
+      repaired, repaired_scene, c.complete, complete_scene, whole, &repaired_to_complete,
+      &first.complete_to_repaired, std::move(first.repaired_shared_faces),
+      repaired_start ? &*repaired_start : nullptr, complete_start ? &*complete_start : nullptr);
   laps.lap(evaluation_phases::kWholeModelDistances);
   const DistanceSummary model = d.summary();
   out.add(kHausdorffRelDiag, model.hausdorff.lower / diagonal);
@@ -296,11 +314,36 @@ void add_agreement(Recorder& out, const char* f_small, const char* f_large, cons
   out.add(consistency, 0.5 * (precision.abs_cosine_mean + recall.abs_cosine_mean));
 }
 
+// The faces' areas of the complete model and of a repair that appends to the input, from
+// the case's (the same numbers as face_areas()), where the case's jobs share them.
+struct KnownFaceAreas {
+  std::vector<double> repaired;
+  const std::vector<double>* complete = nullptr;
+};
+KnownFaceAreas known_face_areas(const Mesh& repaired, const CaseEvaluation* shared,
+                                const KeptFaces* kept) {
+  KnownFaceAreas areas;
+  if (!shared || shared->complete_face_areas().empty())
+    return areas;
+  areas.complete = &shared->complete_face_areas();
+  if (kept && kept->appends_to_input() && repaired.n_faces() >= shared->input_face_areas().size()) {
+    areas.repaired = shared->input_face_areas();
+    areas.repaired.resize(repaired.n_faces(), 0.0);
+    for (std::size_t f = shared->input_face_areas().size(); f < repaired.n_faces(); ++f) {
+      const FaceHandle face(static_cast<int>(f));
+      if (!repaired.status(face).deleted())
+        areas.repaired[f] = face_area(repaired, face);
+    }
+  }
+  return areas;
+}
+
 void add_literature_metrics(const Case& c, const MethodResult& result,
                             const EvaluationOptions& options, double diagonal,
                             const embree::TriangleScene& complete_scene,
                             const embree::TriangleScene& repaired_scene,
-                            const RegionMeshes& regions, Recorder& out) {
+                            const RegionMeshes& regions, const KnownFaceAreas& areas,
+                            Recorder& out) {
   SampledAgreementOptions sampling;
   sampling.thresholds = {options.f_score_tau_small_rel_diag * diagonal,
                          options.f_score_tau_large_rel_diag * diagonal};
@@ -321,11 +364,12 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   }
   // Faces the two models share exactly count exactly (distance 0, the same normal).
   const SharedFaces& shared = regions.shared;
-  add_agreement(
-      out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
-      sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
-                        &patch_answers),
-      sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, &truth_answers));
+  add_agreement(out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
+                sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
+                                  &patch_answers, nullptr,
+                                  areas.repaired.empty() ? nullptr : &areas.repaired),
+                sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b,
+                                  &truth_answers, nullptr, areas.complete));
   if (hole) {
     add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,
                   kHoleNormalConsistencyFraction, hole->first, hole->second);
@@ -570,6 +614,7 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
                                                repaired_scene, first, out, laps);
     if (options.literature_metrics) {
       add_literature_metrics(c, result, options, diagonal, complete_scene, repaired_scene, regions,
+                             known_face_areas(result.repaired, shared, kept ? &*kept : nullptr),
                              out);
       laps.lap(evaluation_phases::kLiteratureMetrics);
     }

@@ -41,8 +41,10 @@ Mesh face_subset(const Mesh& mesh, const std::vector<int>& faces) {
 
 std::vector<int> new_face_indices(const Mesh& mesh) {
   std::vector<int> faces;
-  for (auto f : mesh.faces()) {
-    if (is_new(mesh, f))
+  const std::size_t count = mesh.n_faces();
+  for (std::size_t i = 0; i < count; ++i) {
+    const FaceHandle f(static_cast<int>(i));
+    if (is_new(mesh, f) && !mesh.status(f).deleted())
       faces.push_back(f.idx());
   }
   return faces;

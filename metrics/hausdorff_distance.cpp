@@ -55,11 +55,17 @@ class DirectedSearch {
     for (double d : vertices.distance)
       result_.lower = std::max(result_.lower, d);
     std::vector<TriangleCell> initial;
-    initial.reserve(a.n_faces());
-    for (auto f : a.faces()) {
-      if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
-        continue;  // lies on B: distance zero everywhere
-      initial.push_back(face_cell(a, f, vertices));
+    if (known.unshared_faces) {
+      initial.reserve(known.unshared_faces->size());
+      for (int f : *known.unshared_faces)
+        initial.push_back(face_cell(a, FaceHandle(f), vertices));
+    } else {
+      initial.reserve(a.n_faces());
+      for (auto f : a.faces()) {
+        if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
+          continue;  // lies on B: distance zero everywhere
+        initial.push_back(face_cell(a, f, vertices));
+      }
     }
     // The first cells' queries in parallel, queued in face order (the same queue, and so
     // the same result, whatever the number of threads).

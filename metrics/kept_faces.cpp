@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <numeric>
 #include <unordered_map>
 
 namespace holebench {
@@ -22,6 +23,35 @@ struct IndexTripleHash {
 
 IndexTriple index_triple(const Mesh& mesh, FaceHandle f) {
   return triangle_vertex_indices(mesh, f);
+}
+
+// Whether `repaired` holds every face of `input` at its index with the same vertex indices
+// in the same order, read from the connectivity arrays in index order: each input face's
+// halfedge, and each input halfedge inside a face with its face, next halfedge and target
+// vertex, are the repair's. Then walking a face's halfedges from its halfedge visits the same
+// vertices in both meshes. A repair made by adding faces to a copy of the input passes
+// (adding a face changes only boundary halfedges, which lie in no face); false says only that
+// this check does not show it (a repair may keep the faces with other halfedges).
+bool input_faces_in_place(const Mesh& input, const Mesh& repaired) {
+  if (repaired.n_faces() < input.n_faces() || repaired.n_halfedges() < input.n_halfedges())
+    return false;
+  for (std::size_t f = 0; f < input.n_faces(); ++f) {
+    const FaceHandle face(static_cast<int>(f));
+    if (input.status(face).deleted() || repaired.status(face).deleted() ||
+        input.halfedge_handle(face) != repaired.halfedge_handle(face))
+      return false;
+  }
+  for (std::size_t h = 0; h < input.n_halfedges(); ++h) {
+    const HalfedgeHandle half(static_cast<int>(h));
+    const FaceHandle face = input.face_handle(half);
+    if (!face.is_valid())
+      continue;
+    if (repaired.face_handle(half) != face ||
+        repaired.next_halfedge_handle(half) != input.next_halfedge_handle(half) ||
+        repaired.to_vertex_handle(half) != input.to_vertex_handle(half))
+      return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -45,6 +75,18 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
       return i >= 0 && static_cast<std::size_t>(i) < common && same_vertex[i];
     });
   };
+  // A repair that adds faces to a copy of the input keeps each input face at its index with
+  // the same halfedges: shown in one pass over the arrays, without walking any face.
+  if (kept.input_vertices_kept && input_faces_in_place(input, repaired)) {
+    std::iota(kept.repaired_face_of_input.begin(), kept.repaired_face_of_input.end(), 0);
+    std::iota(kept.input_face_of_repaired.begin(),
+              kept.input_face_of_repaired.begin() + static_cast<std::ptrdiff_t>(input.n_faces()),
+              0);
+    kept.input_faces_in_place = true;
+    for (std::size_t f = input.n_faces(); f < repaired.n_faces(); ++f)
+      kept.repaired_faces_not_kept.push_back(static_cast<int>(f));
+    return kept;
+  }
   // Most repairs keep the input's faces at their indices: each repaired face is looked up
   // at its own index first. Only where input faces are left unmatched is a table of those
   // built for the rest (a mesh has one face per oriented corner, so a triple names at most one
@@ -66,6 +108,7 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
     }
     unmatched_lookups.push_back(index);
   }
+  kept.input_faces_in_place = matched == input.n_faces();
   if (matched < input.n_faces() && !unmatched_lookups.empty()) {
     std::unordered_map<IndexTriple, int, IndexTripleHash> input_face_of;
     for (auto f : input.faces()) {

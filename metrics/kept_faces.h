@@ -22,6 +22,9 @@ struct KeptFaces {
   /// Every input vertex is a vertex of the repair at its index with its point, bit for bit
   /// (what the repair adds are vertices after the input's).
   bool input_vertices_kept = false;
+  /// Every input face is kept at its own index (what the repair adds are faces after the
+  /// input's).
+  bool input_faces_in_place = false;
   /// The repaired faces that are not kept (input_face_of_repaired -1), in index order,
   /// deleted ones among them: where the repair differs, without a pass over the model.
   std::vector<int> repaired_faces_not_kept;
@@ -29,6 +32,9 @@ struct KeptFaces {
   std::vector<int> input_faces_not_kept;
   /// No input face is dropped: every input face is kept.
   bool every_input_face_kept() const { return input_faces_not_kept.empty(); }
+  /// The repair is the input with faces and vertices appended: every input face and vertex
+  /// kept at its index (what most hole fillers do).
+  bool appends_to_input() const { return input_vertices_kept && input_faces_in_place; }
 };
 
 KeptFaces kept_faces(const Mesh& input, const Mesh& repaired);

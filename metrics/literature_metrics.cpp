@@ -116,14 +116,15 @@ AreaSamples area_samples_of(const Mesh& a, std::size_t count, const std::vector<
   std::vector<int> faces;
   std::vector<double> cumulative;
   double total = 0.0;
-  for (auto f : a.faces()) {
-    if (skip && (*skip)[f.idx()])
+  // By index (a deleted face has no area): the faces in order, without the mesh's iterator.
+  for (std::size_t f = 0; f < face_areas.size(); ++f) {
+    if (skip && (*skip)[f])
       continue;
-    const double area = face_areas[f.idx()];
+    const double area = face_areas[f];
     if (!(area > 0.0))
       continue;
     total += area;
-    faces.push_back(f.idx());
+    faces.push_back(static_cast<int>(f));
     cumulative.push_back(total);
   }
   if (faces.empty() || count == 0)
@@ -144,17 +145,10 @@ AreaSamples area_samples_of(const Mesh& a, std::size_t count, const std::vector<
   return samples;
 }
 
-std::vector<double> face_areas_of(const Mesh& a) {
-  std::vector<double> areas(a.n_faces(), 0.0);
-  for (auto f : a.faces())
-    areas[f.idx()] = face_area(a, f);
-  return areas;
-}
-
 }  // namespace
 
 AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
-  return area_samples_of(a, count, skip, face_areas_of(a));
+  return area_samples_of(a, count, skip, face_areas(a));
 }
 
 namespace {
@@ -179,21 +173,26 @@ std::vector<NormalConeAngle> cone_answers(const AreaSamples& samples,
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
                                    const std::vector<int>* b_face_of_a, const SampledAnswers* known,
-                                   SampledAnswers* answers) {
+                                   SampledAnswers* answers,
+                                   const std::vector<double>* known_areas) {
   SampledAgreement agreement;
   if (answers)
     *answers = {};
   agreement.within_fraction.assign(options.thresholds.size(), 0.0);
   std::vector<bool> shared(a.n_faces(), false);
   double shared_area = 0.0;
-  const std::vector<double> face_areas = face_areas_of(a);  // once, for the sums and samples
-  for (auto f : a.faces()) {
-    const double area = face_areas[f.idx()];
+  // Once, for the sums and samples.
+  std::vector<double> computed_areas;
+  if (!known_areas)
+    computed_areas = face_areas(a);
+  const std::vector<double>& areas = known_areas ? *known_areas : computed_areas;
+  for (std::size_t f = 0; f < areas.size(); ++f) {  // by index: a deleted face has no area
+    const double area = areas[f];
     if (!(area > 0.0))
       continue;
     agreement.area += area;
-    if (b_face_of_a && (*b_face_of_a)[f.idx()] >= 0) {
-      shared[f.idx()] = true;
+    if (b_face_of_a && (*b_face_of_a)[f] >= 0) {
+      shared[f] = true;
       shared_area += area;
     }
   }
@@ -203,7 +202,7 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
   const double shared_share = shared_area / agreement.area;
   const double sampled_share = 1.0 - shared_share;
   const AreaSamples samples = agreement.sampled_area > 0.0
-                                  ? area_samples_of(a, options.samples, &shared, face_areas)
+                                  ? area_samples_of(a, options.samples, &shared, areas)
                                   : AreaSamples{};
   agreement.samples = samples.points.size();
   std::vector<std::size_t> within(options.thresholds.size(), 0);

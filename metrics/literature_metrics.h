@@ -83,12 +83,14 @@ struct SampledAnswers {
 /// (shared_faces.h); shared faces count as within every threshold with |cosine| 1.
 /// `known` (optional): answers of an agreement against `b_scene` with these options, taken
 /// where its points are these; `answers` (optional) receives this agreement's own.
+/// `face_areas` (optional): face_areas(a) where the caller has them (case_evaluation.h).
 /// Deterministic: the same meshes give the same numbers, with or without `known`.
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
                                    const std::vector<int>* b_face_of_a = nullptr,
                                    const SampledAnswers* known = nullptr,
-                                   SampledAnswers* answers = nullptr);
+                                   SampledAnswers* answers = nullptr,
+                                   const std::vector<double>* face_areas = nullptr);
 
 /// The points `sampled_agreement` takes on A (faces skipped where `skip` says so): `count`
 /// points spread by area, and the face each lies on.

@@ -183,16 +183,28 @@ class MeanSearch {
     const VertexDistances& vertices = vertex_distances(a, scene_, known, computed);
     result_.queries += computed.queries;
     std::vector<MeanCell> initial;
-    initial.reserve(a.n_faces());
-    for (auto f : a.faces()) {
-      MeanCell cell(face_cell(a, f, vertices));
-      cell.area = triangle_area(cell.corners);
-      if (!(cell.area > 0.0))
-        continue;  // a degenerate triangle has no area to integrate
-      total_area_ += cell.area;
-      if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
-        continue;  // lies on B: contributes zero, exactly
-      initial.push_back(std::move(cell));
+    if (known.unshared_faces) {
+      // A's area and its faces not on B as the caller knows them (SearchStart).
+      total_area_ = known.area;
+      initial.reserve(known.unshared_faces->size());
+      for (int f : *known.unshared_faces) {
+        MeanCell cell(face_cell(a, FaceHandle(f), vertices));
+        cell.area = triangle_area(cell.corners);
+        if (cell.area > 0.0)
+          initial.push_back(std::move(cell));
+      }
+    } else {
+      initial.reserve(a.n_faces());
+      for (auto f : a.faces()) {
+        MeanCell cell(face_cell(a, f, vertices));
+        cell.area = triangle_area(cell.corners);
+        if (!(cell.area > 0.0))
+          continue;  // a degenerate triangle has no area to integrate
+        total_area_ += cell.area;
+        if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
+          continue;  // lies on B: contributes zero, exactly
+        initial.push_back(std::move(cell));
+      }
     }
     // The first cells' bounds; queued below in face order, so the result does not depend
     // on the number of threads.

@@ -201,13 +201,9 @@ std::optional<SharedFaces> SharedFacesOfInput::of_repair(const Mesh& repaired,
   const SharedFaces& input = index_->input_shared;
   const std::size_t input_faces = input.b_face_of_a.size();
   const std::size_t input_vertices = index_->b_vertex_of_input.size();
-  if (!kept.input_vertices_kept || repaired.n_faces() < input_faces ||
+  if (!kept.appends_to_input() || repaired.n_faces() < input_faces ||
       repaired.n_vertices() < input_vertices)
     return std::nullopt;
-  for (std::size_t f = 0; f < input_faces; ++f) {
-    if (kept.input_face_of_repaired[f] != static_cast<int>(f))
-      return std::nullopt;
-  }
   // The face maps only: the corners' tables stay the case's (copying two tables of the
   // model's size per job cost more than the matching).
   SharedFaces result;

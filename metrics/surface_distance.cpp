@@ -52,16 +52,26 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
                                  const SurfaceDistanceOptions& options,
                                  const FirstBounds* a_first_bounds,
                                  const FirstBounds* b_first_bounds,
-                                 std::optional<SharedFaces> known_shared) {
+                                 std::optional<SharedFaces> known_shared,
+                                 const SearchStart* a_start, const SearchStart* b_start) {
   // One first pass per direction, shared by the Hausdorff and the mean searches; faces the
   // two meshes share exactly are skipped by both.
   SharedFaces shared = known_shared ? std::move(*known_shared) : shared_faces(a, b);
-  const VertexDistances a_vertices =
-      vertex_distances(a, b_scene, &shared.b_face_of_a, earlier_vertex_answers(a, a_first_bounds));
-  const VertexDistances b_vertices =
-      vertex_distances(b, a_scene, &shared.a_face_of_b, earlier_vertex_answers(b, b_first_bounds));
-  const KnownDistances a_known{&a_vertices, &shared.b_face_of_a};
-  const KnownDistances b_known{&b_vertices, &shared.a_face_of_b};
+  VertexDistances a_computed, b_computed;
+  if (!a_start)
+    a_computed = vertex_distances(a, b_scene, &shared.b_face_of_a,
+                                  earlier_vertex_answers(a, a_first_bounds));
+  if (!b_start)
+    b_computed = vertex_distances(b, a_scene, &shared.a_face_of_b,
+                                  earlier_vertex_answers(b, b_first_bounds));
+  const VertexDistances& a_vertices = a_start ? a_start->vertices : a_computed;
+  const VertexDistances& b_vertices = b_start ? b_start->vertices : b_computed;
+  const KnownDistances a_known{&a_vertices, &shared.b_face_of_a,
+                               a_start ? &a_start->unshared_faces : nullptr,
+                               a_start ? a_start->area : 0.0};
+  const KnownDistances b_known{&b_vertices, &shared.a_face_of_b,
+                               b_start ? &b_start->unshared_faces : nullptr,
+                               b_start ? b_start->area : 0.0};
   SurfaceDistance result;
   result.hausdorff.a_to_b =
       directed_hausdorff(a, b_scene, options.hausdorff, a_known, hausdorff_first(a_first_bounds));

@@ -234,11 +234,15 @@ struct SurfaceDistance {
 /// `a_first_bounds`, `b_first_bounds` (optional): first-pass bounds (FirstBounds) for the
 /// mean search from A to B and from B to A. `known_shared` (optional): shared_faces(a, b)
 /// where the caller has it (SharedFacesOfInput::of_repair), taken instead of computed.
+/// `a_start`, `b_start` (optional): where the search from A to B and from B to A starts
+/// (SearchStart, with `known_shared`'s faces), taken instead of a pass over every face.
 SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_scene, const Mesh& b,
                                  const embree::TriangleScene& b_scene,
                                  const SurfaceDistanceOptions& options = {},
                                  const FirstBounds* a_first_bounds = nullptr,
                                  const FirstBounds* b_first_bounds = nullptr,
-                                 std::optional<SharedFaces> known_shared = std::nullopt);
+                                 std::optional<SharedFaces> known_shared = std::nullopt,
+                                 const SearchStart* a_start = nullptr,
+                                 const SearchStart* b_start = nullptr);
 
 }  // namespace holebench

@@ -38,11 +38,27 @@ VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_s
                                  const std::vector<int>* b_face_of_a = nullptr,
                                  const EarlierVertexAnswer& earlier = {});
 
-/// What is already known about A against B, to skip the searches' first pass; both parts
+/// What is already known about A against B, to skip the searches' first pass; every part
 /// optional.
 struct KnownDistances {
   const VertexDistances* vertices = nullptr;      ///< from vertex_distances(a, b_scene, ...)
   const std::vector<int>* b_face_of_a = nullptr;  ///< faces of A lying on B: skipped
+  /// With `area`: the faces of A not lying on B, in index order (SearchStart), which the
+  /// searches take as their cells instead of passing over every face of A.
+  const std::vector<int>* unshared_faces = nullptr;
+  double area = 0.0;  ///< with `unshared_faces`: A's area (SearchStart)
+};
+
+/// Where a directed search of A against B starts, for a caller that knows it without a pass
+/// over every face of A (an appended repair: appended_repair_starts.h): A's vertex
+/// distances as vertex_distances() gives them (with the queries they took), the faces of A
+/// that do not lie on B in index order (the searches' first cells; the mean search leaves
+/// out those without area) and A's area (its faces with area, summed in index order). The
+/// searches give the same numbers from it as from A.
+struct SearchStart {
+  VertexDistances vertices;
+  std::vector<int> unshared_faces;
+  double area = 0.0;
 };
 
 /// A's vertex distances as a search starts: `known.vertices` where given, else computed now
