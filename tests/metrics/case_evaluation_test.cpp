@@ -8,24 +8,17 @@
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
 
+#include "tests/metrics/test_repairs.h"
+
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace holebench {
 namespace {
-
-// The input with every hole closed by a fan from its loop's first vertex (new faces).
-Mesh fan_closing(const Mesh& input) {
-  Mesh repaired = input;
-  for (const auto& loop : find_boundary_loops(input)) {
-    const auto v = loop_vertices(input, loop);
-    for (std::size_t i = 1; i + 1 < v.size(); ++i)
-      repaired.add_face(v[0], v[i], v[i + 1]);
-  }
-  return repaired;
-}
 
 // The input with one face at a hole's boundary removed (the faces after it move down one
 // index), then every hole closed by a fan: a repair that drops an input face.
@@ -38,7 +31,7 @@ Mesh drop_and_fan(const Mesh& input) {
   const HalfedgeHandle inside = dropped.opposite_halfedge_handle(loop.halfedges.front());
   dropped.delete_face(dropped.face_handle(inside), false);
   dropped.garbage_collection();
-  return fan_closing(dropped);
+  return test::fan_closing(dropped);
 }
 
 // The input with only its first hole closed by a fan.
@@ -89,13 +82,17 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       }
       const std::string what = std::string(id) + " noise " + std::to_string(noise);
       MethodResult fan;
-      fan.repaired = fan_closing(c.input);
+      fan.repaired = test::fan_closing(c.input);
       expect_same_metrics(evaluate(c, fan, options), evaluate(c, fan, options, shared),
                           what + " fan");
       MethodResult exact;
       exact.repaired = exact_closing(c);
       expect_same_metrics(evaluate(c, exact, options), evaluate(c, exact, options, shared),
                           what + " exact");
+      MethodResult appended;  // an exact closing after the input's faces (new faces shared)
+      appended.repaired = test::exact_appended_closing(c);
+      expect_same_metrics(evaluate(c, appended, options), evaluate(c, appended, options, shared),
+                          what + " exact appended");
       // A repair that also moved an input vertex away from the holes: the faces around it are
       // not the input's, and the bounds read near them are not taken.
       MethodResult moved = fan;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <vector>
 
 namespace holebench {
 namespace {
@@ -88,6 +89,75 @@ TEST(KeptFaces, AppendedPatchKeepsEveryInputFace) {
   EXPECT_EQ(kept.input_face_of_repaired.back(), -1);
   EXPECT_TRUE(kept.order_kept);
   expect_same(kept, brute_force(c.input, repaired));
+}
+
+// The lists of faces not kept, from the maps.
+void expect_lists(const KeptFaces& kept) {
+  std::vector<int> repaired_not_kept, input_not_kept;
+  for (std::size_t f = 0; f < kept.input_face_of_repaired.size(); ++f) {
+    if (kept.input_face_of_repaired[f] < 0)
+      repaired_not_kept.push_back(static_cast<int>(f));
+  }
+  for (std::size_t f = 0; f < kept.repaired_face_of_input.size(); ++f) {
+    if (kept.repaired_face_of_input[f] < 0)
+      input_not_kept.push_back(static_cast<int>(f));
+  }
+  EXPECT_EQ(kept.repaired_faces_not_kept, repaired_not_kept);
+  EXPECT_EQ(kept.input_faces_not_kept, input_not_kept);
+}
+
+// Faces added to a copy of the input, as most methods repair: shown kept in place from the
+// connectivity arrays, the same maps as the definition's.
+TEST(KeptFaces, FacesAddedToACopyKeepTheInputInPlace) {
+  for (const char* id : {"box/corner", "brep/weak/multiple-inner-boundaries/small"}) {
+    const Case c = generators::make_case(id);
+    Mesh repaired = c.input;
+    for (auto h : c.input.halfedges()) {
+      if (!c.input.is_boundary(h))
+        continue;
+      const Point middle = (c.input.point(c.input.from_vertex_handle(h)) +
+                            c.input.point(c.input.to_vertex_handle(h))) *
+                           0.5;
+      const VertexHandle apex = repaired.add_vertex(middle + Point(0.01, 0.02, 0.03));
+      repaired.add_face(c.input.from_vertex_handle(h), c.input.to_vertex_handle(h), apex);
+      break;
+    }
+    ASSERT_EQ(repaired.n_faces(), c.input.n_faces() + 1) << id;
+    const KeptFaces kept = kept_faces(c.input, repaired);
+    EXPECT_TRUE(kept.appends_to_input()) << id;
+    EXPECT_TRUE(kept.every_input_face_kept()) << id;
+    EXPECT_EQ(kept.repaired_faces_not_kept, std::vector<int>{static_cast<int>(c.input.n_faces())});
+    expect_same(kept, brute_force(c.input, repaired));
+    expect_lists(kept);
+  }
+}
+
+// An input face deleted and added again after the others (the same corners, a new index):
+// not in place, found at its new index all the same; a moved vertex: nothing on it kept.
+TEST(KeptFaces, AFaceAddedAgainOrAVertexMovedIsNotInPlace) {
+  const Case c = generators::make_case("box/corner");
+  Mesh again = c.input;
+  again.request_face_status();
+  again.request_edge_status();
+  again.request_vertex_status();
+  const FaceHandle face(5);
+  const auto corners = triangle_vertex_indices(again, face);
+  again.delete_face(face, false);
+  again.add_face(VertexHandle(corners[0]), VertexHandle(corners[1]), VertexHandle(corners[2]));
+  const KeptFaces kept = kept_faces(c.input, again);
+  EXPECT_FALSE(kept.input_faces_in_place);
+  EXPECT_FALSE(kept.appends_to_input());
+  EXPECT_EQ(kept.repaired_face_of_input[5], static_cast<int>(c.input.n_faces()));
+  expect_same(kept, brute_force(c.input, again));
+  expect_lists(kept);
+
+  Mesh moved = c.input;
+  moved.point(VertexHandle(0)) += Point(0, 0, 1e-9);
+  const KeptFaces moved_kept = kept_faces(c.input, moved);
+  EXPECT_FALSE(moved_kept.appends_to_input());
+  EXPECT_FALSE(moved_kept.input_vertices_kept);
+  expect_same(moved_kept, brute_force(c.input, moved));
+  expect_lists(moved_kept);
 }
 
 // The input's faces in reverse order, one rotated and one vertex moved: the faces not at
