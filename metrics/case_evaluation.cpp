@@ -9,7 +9,8 @@
 namespace holebench {
 
 CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) {
-  const double diagonal = bounding_box_diagonal(c.complete);
+  diagonal_ = bounding_box_diagonal(c.complete);
+  const double diagonal = diagonal_;
   if (c.complete.n_faces() > 0 && diagonal > 0.0) {
     complete_scene_ = std::make_unique<embree::TriangleScene>(c.complete);
     const MeanDistanceOptions mean = whole_model_distance_options(options, diagonal).mean;
@@ -22,8 +23,10 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
         std::make_unique<HausdorffCellBounds>(c.input, *complete_scene_, input_pass);
     appended_repair_starts_ = std::make_unique<AppendedRepairStarts>(
         c.input, c.complete, input_pass, shared_faces_of_input_->of_input());
-    input_face_areas_ = face_areas(c.input);
+    const SharedFaces& input_shared = shared_faces_of_input_->of_input();
+    input_sampled_faces_ = sampled_faces(face_areas(c.input), &input_shared.b_face_of_a);
     complete_face_areas_ = face_areas(c.complete);
+    complete_sampled_faces_ = sampled_faces(complete_face_areas_, &input_shared.a_face_of_b);
     if (c.input.n_faces() > 0) {
       input_scene_ = std::make_unique<embree::TriangleScene>(c.input);
       complete_cell_bounds_ = std::make_unique<MeanCellBounds>(

@@ -8,6 +8,7 @@
 #include "metrics/appended_repair_starts.h"
 #include "metrics/evaluation.h"
 #include "metrics/input_topology.h"
+#include "metrics/literature_metrics.h"
 #include "metrics/surface_distance.h"
 #include "metrics/validity.h"
 
@@ -38,6 +39,8 @@ class CaseEvaluation {
   CaseEvaluation(const CaseEvaluation&) = delete;
   CaseEvaluation& operator=(const CaseEvaluation&) = delete;
 
+  /// The complete model's bounding-box diagonal (every length is relative to it).
+  double diagonal() const { return diagonal_; }
   /// The complete model's scene, or nullptr where the case has no complete model.
   const embree::TriangleScene* complete_scene() const { return complete_scene_.get(); }
   /// The input's scene, or nullptr where the case has no complete model or no input faces.
@@ -54,9 +57,15 @@ class CaseEvaluation {
   const AppendedRepairStarts* appended_repair_starts() const {
     return appended_repair_starts_.get();
   }
-  /// The area of each input face and of each complete model's face (face_area(), by index),
-  /// for the sampled metrics, or empty where the case has no complete model.
-  const std::vector<double>& input_face_areas() const { return input_face_areas_; }
+  /// The sampled metrics' tallies (literature_metrics.h, SampledFaces) of the input against
+  /// the complete model and of the complete model against the input, and the complete
+  /// model's face areas (face_areas()), or nullptr where the case has no complete model.
+  const SampledFaces* input_sampled_faces() const {
+    return input_sampled_faces_ ? &*input_sampled_faces_ : nullptr;
+  }
+  const SampledFaces* complete_sampled_faces() const {
+    return complete_sampled_faces_ ? &*complete_sampled_faces_ : nullptr;
+  }
   const std::vector<double>& complete_face_areas() const { return complete_face_areas_; }
   /// The input's faces' first Hausdorff bounds against the complete model, or nullptr.
   const HausdorffCellBounds* input_hausdorff_bounds() const {
@@ -77,6 +86,7 @@ class CaseEvaluation {
   const std::vector<double>& input_corner_distances() const { return input_corner_distances_; }
 
  private:
+  double diagonal_ = 0.0;
   std::unique_ptr<embree::TriangleScene> complete_scene_;
   std::unique_ptr<embree::TriangleScene> input_scene_;
   std::unique_ptr<SharedFacesOfInput> shared_faces_of_input_;
@@ -84,7 +94,8 @@ class CaseEvaluation {
   std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
   std::unique_ptr<HausdorffCellBounds> input_hausdorff_bounds_;
   std::unique_ptr<AppendedRepairStarts> appended_repair_starts_;
-  std::vector<double> input_face_areas_;
+  std::optional<SampledFaces> input_sampled_faces_;
+  std::optional<SampledFaces> complete_sampled_faces_;
   std::vector<double> complete_face_areas_;
   std::optional<InputSelfIntersections> input_self_intersections_;
   InputTopology input_topology_;

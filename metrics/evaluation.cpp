@@ -314,36 +314,48 @@ void add_agreement(Recorder& out, const char* f_small, const char* f_large, cons
   out.add(consistency, 0.5 * (precision.abs_cosine_mean + recall.abs_cosine_mean));
 }
 
-// The faces' areas of the complete model and of a repair that appends to the input, from
-// the case's (the same numbers as face_areas()), where the case's jobs share them.
-struct KnownFaceAreas {
-  std::vector<double> repaired;
-  const std::vector<double>* complete = nullptr;
+// The sampled metrics' tallies of a repair that appends to the input and of the complete
+// model against it, from the case's (the same sums and faces as sampled_faces()): the input's
+// continued over the new faces; the complete model's against the input where no new face is
+// one of its faces, else made anew from its areas.
+struct KnownSampledFaces {
+  std::optional<SampledFaces> repaired;
+  std::optional<SampledFaces> complete_made;
+  const SampledFaces* complete = nullptr;
 };
-KnownFaceAreas known_face_areas(const Mesh& repaired, const CaseEvaluation* shared,
-                                const KeptFaces* kept) {
-  KnownFaceAreas areas;
-  if (!shared || shared->complete_face_areas().empty())
-    return areas;
-  areas.complete = &shared->complete_face_areas();
-  if (kept && kept->appends_to_input() && repaired.n_faces() >= shared->input_face_areas().size()) {
-    areas.repaired = shared->input_face_areas();
-    areas.repaired.resize(repaired.n_faces(), 0.0);
-    for (std::size_t f = shared->input_face_areas().size(); f < repaired.n_faces(); ++f) {
-      const FaceHandle face(static_cast<int>(f));
-      if (!repaired.status(face).deleted())
-        areas.repaired[f] = face_area(repaired, face);
-    }
+KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
+                                      const SharedFaces& shared, const CaseEvaluation* known,
+                                      const KeptFaces* kept) {
+  KnownSampledFaces tallies;
+  if (!known || !known->input_sampled_faces() || !kept || !kept->appends_to_input() ||
+      repaired.n_faces() < c.input.n_faces())
+    return tallies;
+  const std::size_t first = c.input.n_faces();
+  std::vector<double> new_areas(repaired.n_faces() - first, 0.0);
+  bool new_face_on_complete = false;
+  for (std::size_t f = first; f < repaired.n_faces(); ++f) {
+    const FaceHandle face(static_cast<int>(f));
+    if (!repaired.status(face).deleted())
+      new_areas[f - first] = face_area(repaired, face);
+    new_face_on_complete = new_face_on_complete || shared.b_face_of_a[f] >= 0;
   }
-  return areas;
+  tallies.repaired = *known->input_sampled_faces();
+  tally_faces(new_areas, &shared.b_face_of_a, first, *tallies.repaired);
+  if (new_face_on_complete) {
+    tallies.complete_made = sampled_faces(known->complete_face_areas(), &shared.a_face_of_b);
+    tallies.complete = &*tallies.complete_made;
+  } else {
+    tallies.complete = known->complete_sampled_faces();
+  }
+  return tallies;
 }
 
 void add_literature_metrics(const Case& c, const MethodResult& result,
                             const EvaluationOptions& options, double diagonal,
                             const embree::TriangleScene& complete_scene,
                             const embree::TriangleScene& repaired_scene,
-                            const RegionMeshes& regions, const KnownFaceAreas& areas,
-                            Recorder& out) {
+                            const RegionMeshes& regions, const CaseEvaluation* known,
+                            const KeptFaces* kept, Recorder& out) {
   SampledAgreementOptions sampling;
   sampling.thresholds = {options.f_score_tau_small_rel_diag * diagonal,
                          options.f_score_tau_large_rel_diag * diagonal};
@@ -364,12 +376,13 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   }
   // Faces the two models share exactly count exactly (distance 0, the same normal).
   const SharedFaces& shared = regions.shared;
-  add_agreement(out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
-                sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
-                                  &patch_answers, nullptr,
-                                  areas.repaired.empty() ? nullptr : &areas.repaired),
-                sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b,
-                                  &truth_answers, nullptr, areas.complete));
+  const KnownSampledFaces tallies = known_sampled_faces(c, result.repaired, shared, known, kept);
+  add_agreement(
+      out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
+      sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
+                        &patch_answers, nullptr, tallies.repaired ? &*tallies.repaired : nullptr),
+      sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, &truth_answers,
+                        nullptr, tallies.complete));
   if (hole) {
     add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,
                   kHoleNormalConsistencyFraction, hole->first, hole->second);
@@ -583,7 +596,7 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
   Evaluation evaluation;
   Recorder out(evaluation.values);
   PhaseLaps laps(evaluation.phases);
-  const double diagonal = bounding_box_diagonal(c.complete);
+  const double diagonal = shared ? shared->diagonal() : bounding_box_diagonal(c.complete);
   if (!(diagonal > 0.0) || c.complete.n_faces() == 0)
     return evaluation;  // no ground truth to measure against
   if (!c.has_ground_truth) {
@@ -614,8 +627,7 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
                                                repaired_scene, first, out, laps);
     if (options.literature_metrics) {
       add_literature_metrics(c, result, options, diagonal, complete_scene, repaired_scene, regions,
-                             known_face_areas(result.repaired, shared, kept ? &*kept : nullptr),
-                             out);
+                             shared, kept ? &*kept : nullptr, out);
       laps.lap(evaluation_phases::kLiteratureMetrics);
     }
     // What the case knows of the input, where the repair kept it (feature_recovery.h).

@@ -107,30 +107,43 @@ ChamferDistance chamfer_distance(const DistanceSummary& a_to_b, const DistanceSu
   return c;
 }
 
-namespace {
-
-// area_samples with each face's area given (by face index), where the caller has them.
-AreaSamples area_samples_of(const Mesh& a, std::size_t count, const std::vector<bool>* skip,
-                            const std::vector<double>& face_areas) {
-  AreaSamples samples;
-  std::vector<int> faces;
-  std::vector<double> cumulative;
-  double total = 0.0;
+void tally_faces(const std::vector<double>& face_areas, const std::vector<int>* b_face_of_a,
+                 std::size_t first, SampledFaces& tally) {
   // By index (a deleted face has no area): the faces in order, without the mesh's iterator.
-  for (std::size_t f = 0; f < face_areas.size(); ++f) {
-    if (skip && (*skip)[f])
-      continue;
-    const double area = face_areas[f];
+  for (std::size_t i = 0; i < face_areas.size(); ++i) {
+    const std::size_t f = first + i;
+    const double area = face_areas[i];
     if (!(area > 0.0))
       continue;
-    total += area;
-    faces.push_back(static_cast<int>(f));
-    cumulative.push_back(total);
+    tally.area += area;
+    if (b_face_of_a && (*b_face_of_a)[f] >= 0) {
+      tally.shared_area += area;
+      continue;
+    }
+    tally.unshared_area += area;
+    tally.faces.push_back(static_cast<int>(f));
+    tally.cumulative.push_back(tally.unshared_area);
   }
+}
+
+SampledFaces sampled_faces(const std::vector<double>& face_areas,
+                           const std::vector<int>* b_face_of_a) {
+  SampledFaces tally;
+  tally_faces(face_areas, b_face_of_a, 0, tally);
+  return tally;
+}
+
+namespace {
+
+// `count` points spread by area over `faces` (with the running sum of their areas):
+// systematic sampling, point k at cumulative area (k + 1/2) / count of the total.
+AreaSamples samples_on(const Mesh& a, std::size_t count, const std::vector<int>& faces,
+                       const std::vector<double>& cumulative) {
+  AreaSamples samples;
   if (faces.empty() || count == 0)
     return samples;
+  const double total = cumulative.back();
   samples.points.reserve(count);
-  // Systematic sampling: point k at cumulative area (k + 1/2) / count of the total.
   std::size_t face = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const double at = (static_cast<double>(k) + 0.5) / static_cast<double>(count) * total;
@@ -148,7 +161,18 @@ AreaSamples area_samples_of(const Mesh& a, std::size_t count, const std::vector<
 }  // namespace
 
 AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
-  return area_samples_of(a, count, skip, face_areas(a));
+  const std::vector<double> areas = face_areas(a);
+  std::vector<int> faces;
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (std::size_t f = 0; f < areas.size(); ++f) {
+    if ((skip && (*skip)[f]) || !(areas[f] > 0.0))
+      continue;
+    total += areas[f];
+    faces.push_back(static_cast<int>(f));
+    cumulative.push_back(total);
+  }
+  return samples_on(a, count, faces, cumulative);
 }
 
 namespace {
@@ -173,36 +197,24 @@ std::vector<NormalConeAngle> cone_answers(const AreaSamples& samples,
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
                                    const std::vector<int>* b_face_of_a, const SampledAnswers* known,
-                                   SampledAnswers* answers,
-                                   const std::vector<double>* known_areas) {
+                                   SampledAnswers* answers, const SampledFaces* known_faces) {
   SampledAgreement agreement;
   if (answers)
     *answers = {};
   agreement.within_fraction.assign(options.thresholds.size(), 0.0);
-  std::vector<bool> shared(a.n_faces(), false);
-  double shared_area = 0.0;
-  // Once, for the sums and samples.
-  std::vector<double> computed_areas;
-  if (!known_areas)
-    computed_areas = face_areas(a);
-  const std::vector<double>& areas = known_areas ? *known_areas : computed_areas;
-  for (std::size_t f = 0; f < areas.size(); ++f) {  // by index: a deleted face has no area
-    const double area = areas[f];
-    if (!(area > 0.0))
-      continue;
-    agreement.area += area;
-    if (b_face_of_a && (*b_face_of_a)[f] >= 0) {
-      shared[f] = true;
-      shared_area += area;
-    }
-  }
+  // A's faces tallied once, for the sums and the samples.
+  SampledFaces computed;
+  if (!known_faces)
+    computed = sampled_faces(face_areas(a), b_face_of_a);
+  const SampledFaces& tally = known_faces ? *known_faces : computed;
+  agreement.area = tally.area;
   if (!(agreement.area > 0.0))
     return agreement;
-  agreement.sampled_area = agreement.area - shared_area;
-  const double shared_share = shared_area / agreement.area;
+  agreement.sampled_area = agreement.area - tally.shared_area;
+  const double shared_share = tally.shared_area / agreement.area;
   const double sampled_share = 1.0 - shared_share;
   const AreaSamples samples = agreement.sampled_area > 0.0
-                                  ? area_samples_of(a, options.samples, &shared, areas)
+                                  ? samples_on(a, options.samples, tally.faces, tally.cumulative)
                                   : AreaSamples{};
   agreement.samples = samples.points.size();
   std::vector<std::size_t> within(options.thresholds.size(), 0);

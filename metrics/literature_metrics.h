@@ -79,18 +79,40 @@ struct SampledAnswers {
   std::vector<NormalConeAngle> cones;
 };
 
+/// A's faces as the sampled metrics take them: A's area and the area of its faces on B
+/// (each summed over the faces with area in index order), and the other faces with area, in
+/// index order, with the running sum of their areas (the samples are drawn from them).
+struct SampledFaces {
+  double area = 0.0;
+  double shared_area = 0.0;
+  double unshared_area = 0.0;
+  std::vector<int> faces;
+  std::vector<double> cumulative;
+};
+
+/// The tally of A's faces from their areas (face_areas(a)) and `b_face_of_a` (optional: by
+/// face of A, the same face in B or -1).
+SampledFaces sampled_faces(const std::vector<double>& face_areas,
+                           const std::vector<int>* b_face_of_a);
+/// The tally continued over faces `first`, `first` + 1, ... (`face_areas[i]`: the area of
+/// face `first` + i), where `tally` holds the faces before them: the same sums, in the same
+/// order, as sampled_faces() over every face.
+void tally_faces(const std::vector<double>& face_areas, const std::vector<int>* b_face_of_a,
+                 std::size_t first, SampledFaces& tally);
+
 /// A against B's scene. `b_face_of_a` (optional): by face of A, the same face in B or -1
 /// (shared_faces.h); shared faces count as within every threshold with |cosine| 1.
 /// `known` (optional): answers of an agreement against `b_scene` with these options, taken
 /// where its points are these; `answers` (optional) receives this agreement's own.
-/// `face_areas` (optional): face_areas(a) where the caller has them (case_evaluation.h).
+/// `known_faces` (optional): sampled_faces() of A against B where the caller has it
+/// (case_evaluation.h), taken instead of a pass over A's faces.
 /// Deterministic: the same meshes give the same numbers, with or without `known`.
 SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b_scene,
                                    const SampledAgreementOptions& options,
                                    const std::vector<int>* b_face_of_a = nullptr,
                                    const SampledAnswers* known = nullptr,
                                    SampledAnswers* answers = nullptr,
-                                   const std::vector<double>* face_areas = nullptr);
+                                   const SampledFaces* known_faces = nullptr);
 
 /// The points `sampled_agreement` takes on A (faces skipped where `skip` says so): `count`
 /// points spread by area, and the face each lies on.

@@ -379,3 +379,41 @@ TEST(EdgeChamferDistance, APlateauAcrossTheCrease) {
 
 }  // namespace
 }  // namespace holebench
+
+namespace holebench {
+namespace {
+
+// A tally continued from any face on equals the tally over every face, sum for sum (the same
+// order); an agreement given it equals the one that tallies A itself, bit for bit.
+TEST(LiteratureMetrics, ATallyContinuedEqualsTheWholeTally) {
+  for (const auto& pair : pairs()) {
+    SCOPED_TRACE(pair.name);
+    const SharedFaces shared = shared_faces(pair.a, pair.b);
+    const std::vector<double> areas = face_areas(pair.a);
+    const SampledFaces whole = sampled_faces(areas, &shared.b_face_of_a);
+    for (std::size_t first : {std::size_t{0}, areas.size() / 3, areas.size()}) {
+      SampledFaces tally = sampled_faces(std::vector<double>(areas.begin(), areas.begin() + first),
+                                         &shared.b_face_of_a);
+      tally_faces(std::vector<double>(areas.begin() + first, areas.end()), &shared.b_face_of_a,
+                  first, tally);
+      EXPECT_EQ(tally.area, whole.area);
+      EXPECT_EQ(tally.shared_area, whole.shared_area);
+      EXPECT_EQ(tally.unshared_area, whole.unshared_area);
+      EXPECT_EQ(tally.faces, whole.faces);
+      EXPECT_EQ(tally.cumulative, whole.cumulative);
+    }
+    const embree::TriangleScene b_scene(pair.b);
+    SampledAgreementOptions options;
+    options.thresholds = {pair.tau};
+    const auto alone = sampled_agreement(pair.a, b_scene, options, &shared.b_face_of_a);
+    const auto given =
+        sampled_agreement(pair.a, b_scene, options, &shared.b_face_of_a, nullptr, nullptr, &whole);
+    EXPECT_EQ(alone.within_fraction, given.within_fraction);
+    EXPECT_EQ(alone.abs_cosine_mean, given.abs_cosine_mean);
+    EXPECT_EQ(alone.area, given.area);
+    EXPECT_EQ(alone.sampled_area, given.sampled_area);
+  }
+}
+
+}  // namespace
+}  // namespace holebench
