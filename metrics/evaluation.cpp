@@ -152,12 +152,11 @@ struct PatchMean {
   std::optional<Mesh> patch;
   std::optional<DirectedMeanDistance> mean;
 };
-PatchMean patch_mean(const Mesh& repaired, bool case_has_holes,
+PatchMean patch_mean(const Mesh& repaired, const std::vector<int>& new_faces, bool case_has_holes,
                      const embree::TriangleScene& complete_scene,
                      const MeanDistanceOptions& options, MeanSearchSteps& steps) {
   PatchMean result;
-  const std::vector<int> patch_faces =
-      case_has_holes ? new_face_indices(repaired) : std::vector<int>{};
+  const std::vector<int> patch_faces = case_has_holes ? new_faces : std::vector<int>{};
   if (patch_faces.empty())
     return result;
   result.patch.emplace(face_subset(repaired, patch_faces));
@@ -211,10 +210,8 @@ void add_new_vertex_error(const Mesh& repaired, const embree::TriangleScene& com
                           double diagonal, Recorder& out) {
   double sum = 0.0;
   std::size_t count = 0;
-  for (auto v : repaired.vertices()) {
-    if (!is_new(repaired, v))
-      continue;
-    sum += complete_scene.closest_point(repaired.point(v)).distance;
+  for (int v : new_vertex_indices(repaired)) {
+    sum += complete_scene.closest_point(repaired.point(VertexHandle(v))).distance;
     ++count;
   }
   if (count > 0)
@@ -231,8 +228,8 @@ struct RegionMeshes {
 };
 
 RegionMeshes add_distances(const Case& c, const MethodResult& result,
-                           const EvaluationOptions& options, double diagonal,
-                           const embree::TriangleScene& complete_scene,
+                           const std::vector<int>& new_faces, const EvaluationOptions& options,
+                           double diagonal, const embree::TriangleScene& complete_scene,
                            const embree::TriangleScene& repaired_scene, SharedFirstBounds& first,
                            Recorder& out, PhaseLaps& laps) {
   const Mesh& repaired = result.repaired;
@@ -244,8 +241,8 @@ RegionMeshes add_distances(const Case& c, const MethodResult& result,
   // of the repair against the complete model takes the steps it recorded for the cells they
   // share, the patch's (MeanSearchSteps: the same numbers, computed once).
   MeanSearchSteps patch_steps;
-  PatchMean patch =
-      patch_mean(repaired, !removed.empty(), complete_scene, hole_options.mean, patch_steps);
+  PatchMean patch = patch_mean(repaired, new_faces, !removed.empty(), complete_scene,
+                               hole_options.mean, patch_steps);
   laps.lap(evaluation_phases::kPatchMean);
   FirstBounds repaired_to_complete = first.repaired_to_complete;
   repaired_to_complete.steps = &patch_steps;
@@ -351,8 +348,8 @@ KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
 }
 
 void add_literature_metrics(const Case& c, const MethodResult& result,
-                            const EvaluationOptions& options, double diagonal,
-                            const embree::TriangleScene& complete_scene,
+                            const std::vector<int>& new_faces, const EvaluationOptions& options,
+                            double diagonal, const embree::TriangleScene& complete_scene,
                             const embree::TriangleScene& repaired_scene,
                             const RegionMeshes& regions, const CaseEvaluation* known,
                             const KeptFaces* kept, Recorder& out) {
@@ -389,8 +386,8 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   }
   EdgeChamferOptions edge_options;
   edge_options.edge_sample_spacing = options.edge_sample_spacing_rel_diag * diagonal;
-  if (const auto edge =
-          edge_chamfer_distance(c.complete, removed_faces(c), result.repaired, edge_options))
+  if (const auto edge = edge_chamfer_distance(c.complete, removed_faces(c), result.repaired,
+                                              edge_options, &new_faces))
     out.add(kHoleEdgeChamferRelDiag, *edge / diagonal);
 }
 
@@ -448,9 +445,10 @@ bool valid_repair(const MethodResult& result, const Validity& v) {
          v.original_faces_changed == 0;
 }
 
-void add_validity(const Case& c, const MethodResult& result, const EvaluationOptions& options,
-                  double diagonal, const CaseEvaluation* shared, const KeptFaces* kept,
-                  const embree::TriangleScene* repaired_scene, Recorder& out) {
+void add_validity(const Case& c, const MethodResult& result, const std::vector<int>& new_faces,
+                  const EvaluationOptions& options, double diagonal, const CaseEvaluation* shared,
+                  const KeptFaces* kept, const embree::TriangleScene* repaired_scene,
+                  Recorder& out) {
   const InputSelfIntersections* known_input = shared ? shared->input_self_intersections() : nullptr;
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
@@ -466,7 +464,7 @@ void add_validity(const Case& c, const MethodResult& result, const EvaluationOpt
     out.add_count(kSelfIntersectionsCount, v.self_intersections);
     out.add_count(kPatchSelfIntersectionsCount, v.patch_self_intersections);
   }
-  out.add_count(kNewFacesCount, count_new_faces(result.repaired));
+  out.add_count(kNewFacesCount, new_faces.size());
   out.add_count(kInputFacesCount, c.input.n_faces());
   out.add_count(kNewDegenerateFacesCount, v.new_degenerate_faces);
   out.add_count(kOriginalFacesChangedCount, v.original_faces_changed);
@@ -584,7 +582,8 @@ void add_no_truth_metrics(const Case& c, const MethodResult& result,
   add(kPatchTriangleQualityMinFraction, q.triangle_quality_min);
   add(kPatchTriangleQualityMeanFraction, q.triangle_quality_mean);
   laps.lap(evaluation_phases::kPatchQuality);
-  add_validity(c, result, options, diagonal, nullptr, nullptr, nullptr, out);
+  add_validity(c, result, new_face_indices(result.repaired), options, diagonal, nullptr, nullptr,
+               nullptr, out);
   laps.lap(evaluation_phases::kValidity);
   add_fallbacks(result, out);
 }
@@ -618,16 +617,18 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     first = shared_first_bounds(c, result, shared, &*kept);
     laps.lap(evaluation_phases::kKeptFaces);
   }
+  // The repair's new faces, found once for the patch, the edges around it and the counts.
+  const std::vector<int> new_faces = new_face_indices(result.repaired);
   std::unique_ptr<embree::TriangleScene> repaired_scene_owner;
   if (result.repaired.n_faces() > 0) {
     repaired_scene_owner = repaired_scene_of(result.repaired, shared, kept ? &*kept : nullptr);
     const embree::TriangleScene& repaired_scene = *repaired_scene_owner;
     laps.lap(evaluation_phases::kRepairedScene);
-    const RegionMeshes regions = add_distances(c, result, options, diagonal, complete_scene,
-                                               repaired_scene, first, out, laps);
+    const RegionMeshes regions = add_distances(c, result, new_faces, options, diagonal,
+                                               complete_scene, repaired_scene, first, out, laps);
     if (options.literature_metrics) {
-      add_literature_metrics(c, result, options, diagonal, complete_scene, repaired_scene, regions,
-                             shared, kept ? &*kept : nullptr, out);
+      add_literature_metrics(c, result, new_faces, options, diagonal, complete_scene,
+                             repaired_scene, regions, shared, kept ? &*kept : nullptr, out);
       laps.lap(evaluation_phases::kLiteratureMetrics);
     }
     // What the case knows of the input, where the repair kept it (feature_recovery.h).
@@ -642,7 +643,7 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     add_feature_recovery(c, result, options, diagonal, complete_scene, shortcuts, out);
     laps.lap(evaluation_phases::kFeatureRecovery);
   }
-  add_validity(c, result, options, diagonal, shared, kept ? &*kept : nullptr,
+  add_validity(c, result, new_faces, options, diagonal, shared, kept ? &*kept : nullptr,
                shared ? repaired_scene_owner.get() : nullptr, out);
   laps.lap(evaluation_phases::kValidity);
   // The reports' holes, matched once for the classification and the arrows.

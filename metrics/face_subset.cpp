@@ -50,4 +50,15 @@ std::vector<int> new_face_indices(const Mesh& mesh) {
   return faces;
 }
 
+std::vector<int> new_vertex_indices(const Mesh& mesh) {
+  std::vector<int> vertices;
+  const std::size_t count = mesh.n_vertices();
+  for (std::size_t i = 0; i < count; ++i) {
+    const VertexHandle v(static_cast<int>(i));
+    if (is_new(mesh, v) && !mesh.status(v).deleted())
+      vertices.push_back(v.idx());
+  }
+  return vertices;
+}
+
 }  // namespace holebench

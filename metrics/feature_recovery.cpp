@@ -3,6 +3,7 @@
 #include "core/distances.h"
 #include "core/geometry.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/face_subset.h"
 #include "metrics/growing_box.h"
 
 #include <algorithm>
@@ -256,9 +257,8 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
   }
 
   double area_sum = 0.0, weighted = 0.0, largest = 0.0;
-  for (auto f : repaired.faces()) {
-    if (!is_new(repaired, f))
-      continue;
+  for (int index : new_face_indices(repaired)) {
+    const FaceHandle f(index);
     const double area = face_area(repaired, f);
     if (!(area > 0.0))
       continue;

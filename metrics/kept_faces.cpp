@@ -58,27 +58,22 @@ bool input_faces_in_place(const Mesh& input, const Mesh& repaired) {
 
 KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
   KeptFaces kept;
-  kept.repaired_face_of_input.assign(input.n_faces(), -1);
-  kept.input_face_of_repaired.assign(repaired.n_faces(), -1);
   // Vertices of the repaired mesh at the input's index and, bit for bit, its point.
   const std::size_t common = std::min(input.n_vertices(), repaired.n_vertices());
-  std::vector<char> same_vertex(common, 0);
-  for (std::size_t i = 0; i < common; ++i) {
+  const auto same_vertex_at = [&](std::size_t i) {
     const VertexHandle v(static_cast<int>(i));
-    same_vertex[i] = !repaired.status(v).deleted() && repaired.point(v) == input.point(v);
-  }
-  kept.input_vertices_kept =
-      common == input.n_vertices() &&
-      std::all_of(same_vertex.begin(), same_vertex.end(), [](char same) { return same != 0; });
-  const auto on_same_vertices = [&](const IndexTriple& t) {
-    return std::all_of(t.begin(), t.end(), [&](int i) {
-      return i >= 0 && static_cast<std::size_t>(i) < common && same_vertex[i];
-    });
+    return !repaired.status(v).deleted() && repaired.point(v) == input.point(v);
   };
+  bool all_same = common == input.n_vertices();
+  for (std::size_t i = 0; i < common && all_same; ++i)
+    all_same = same_vertex_at(i);
+  kept.input_vertices_kept = all_same;
   // A repair that adds faces to a copy of the input keeps each input face at its index with
   // the same halfedges: shown in one pass over the arrays, without walking any face.
   if (kept.input_vertices_kept && input_faces_in_place(input, repaired)) {
+    kept.repaired_face_of_input.resize(input.n_faces());
     std::iota(kept.repaired_face_of_input.begin(), kept.repaired_face_of_input.end(), 0);
+    kept.input_face_of_repaired.assign(repaired.n_faces(), -1);
     std::iota(kept.input_face_of_repaired.begin(),
               kept.input_face_of_repaired.begin() + static_cast<std::ptrdiff_t>(input.n_faces()),
               0);
@@ -87,6 +82,16 @@ KeptFaces kept_faces(const Mesh& input, const Mesh& repaired) {
       kept.repaired_faces_not_kept.push_back(static_cast<int>(f));
     return kept;
   }
+  kept.repaired_face_of_input.assign(input.n_faces(), -1);
+  kept.input_face_of_repaired.assign(repaired.n_faces(), -1);
+  std::vector<char> same_vertex(common, 0);
+  for (std::size_t i = 0; i < common; ++i)
+    same_vertex[i] = same_vertex_at(i);
+  const auto on_same_vertices = [&](const IndexTriple& t) {
+    return std::all_of(t.begin(), t.end(), [&](int i) {
+      return i >= 0 && static_cast<std::size_t>(i) < common && same_vertex[i];
+    });
+  };
   // Most repairs keep the input's faces at their indices: each repaired face is looked up
   // at its own index first. Only where input faces are left unmatched is a table of those
   // built for the rest (a mesh has one face per oriented corner, so a triple names at most one

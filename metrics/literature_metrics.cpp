@@ -241,11 +241,12 @@ double f_score(double precision, double recall) {
 
 std::optional<double> edge_chamfer_distance(const Mesh& complete,
                                             const std::vector<int>& removed_faces,
-                                            const Mesh& repaired,
-                                            const EdgeChamferOptions& options) {
+                                            const Mesh& repaired, const EdgeChamferOptions& options,
+                                            const std::vector<int>* repaired_new_faces) {
   const auto truth = sharp_edges_around(complete, options.sharp_angle_degrees, removed_faces);
   const auto repair =
-      sharp_edges_around(repaired, options.sharp_angle_degrees, new_face_indices(repaired));
+      sharp_edges_around(repaired, options.sharp_angle_degrees,
+                         repaired_new_faces ? *repaired_new_faces : new_face_indices(repaired));
   if (truth.empty() || repair.empty())
     return std::nullopt;
   const auto truth_points = sample_segments(truth, options.edge_sample_spacing);

@@ -133,9 +133,11 @@ struct EdgeChamferOptions {
 
 /// The edge Chamfer distance of the repair's sharp edges around its new faces and the complete
 /// model's around `removed_faces` (see the header comment); nothing where either has none.
+/// `repaired_new_faces` (optional): new_face_indices(repaired) where the caller has them.
 std::optional<double> edge_chamfer_distance(const Mesh& complete,
                                             const std::vector<int>& removed_faces,
                                             const Mesh& repaired,
-                                            const EdgeChamferOptions& options = {});
+                                            const EdgeChamferOptions& options = {},
+                                            const std::vector<int>* repaired_new_faces = nullptr);
 
 }  // namespace holebench

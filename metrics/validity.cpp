@@ -3,6 +3,7 @@
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/face_subset.h"
 #include "metrics/growing_box.h"
 #include "metrics/kept_faces.h"
 
@@ -170,9 +171,8 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
     result.patch_self_intersections = pairs.patch_pairs;
   }
 
-  for (auto f : repaired.faces()) {
-    if (!is_new(repaired, f))
-      continue;
+  for (int index : new_face_indices(repaired)) {
+    const FaceHandle f(index);
     const auto t = face_corners(repaired, f);
     if (face_area(repaired, f) <= options.degenerate_area ||
         smallest_angle_degrees(t) < options.min_angle_degrees)
