@@ -117,6 +117,8 @@ void write_repaired_files(const fs::path& dir, const JobRecord& method_record,
 
 MethodResult read_scored_repair(const Job& job, const Mesh& holed, const ScoredRepairs& repairs,
                                 JobRecord& record) {
+  // The job's user, unless the side file names the one that answered the method.
+  record.user = job.user;
   const auto exported = repairs.exported_inputs.find(job.case_instance());
   if (exported != repairs.exported_inputs.end())
     check_exported_input(holed, exported->second);

@@ -61,12 +61,12 @@ fs::path export_cases(const fs::path& root, const std::vector<double>& noise_lev
 
 // The run that scores `method`'s repairs in `repaired` against the exports under `cases`.
 RunSummary score(const fs::path& cases, const fs::path& repaired, const std::string& method,
-                 const fs::path& out) {
+                 const fs::path& out, const std::string& user = "no_user") {
   RunOptions options = quiet_run(out);
   ScoredRepairs scored;
   scored.repaired_dir = repaired;
   for (const auto& exported : find_exported_cases({cases})) {
-    Job job = scoring_job(exported, method, "no_user");
+    Job job = scoring_job(exported, method, user);
     scored.exported_inputs[job.case_instance()] = exported.input;
     options.jobs.push_back(job);
   }
@@ -133,7 +133,8 @@ TEST(ScoredRepairs, ARepairNamedAfterItsCaseIsScoredFromItsMeshAlone) {
     write_mesh(read_mesh(run.out_dir / "repaired" / (file_stem_of_id(record.job.id()) + ".ply")),
                elsewhere / (file_stem_of_id(record.job.case_id) + ".off"));
   }
-  const RunSummary scored = score(cases, elsewhere, "my_fill", fresh_dir("scored_plain"));
+  // Scored as the oracle user's jobs: with no side file, the record names the job's user.
+  const RunSummary scored = score(cases, elsewhere, "my_fill", fresh_dir("scored_plain"), "oracle");
   const auto made_by_case = [&](const std::string& case_id) {
     for (const auto& record : made.records)
       if (record.job.case_id == case_id)
@@ -144,6 +145,8 @@ TEST(ScoredRepairs, ARepairNamedAfterItsCaseIsScoredFromItsMeshAlone) {
   for (const auto& record : scored.records) {
     SCOPED_TRACE(record.job.id());
     EXPECT_EQ(record.job.method_id, "my_fill");
+    EXPECT_EQ(record.job.user, "oracle");
+    EXPECT_EQ(record.user, "oracle");
     EXPECT_EQ(record.status, JobStatus::Ok) << record.message;
     ASSERT_FALSE(record.holes.empty());
     for (const auto& hole : record.holes)
@@ -191,14 +194,17 @@ TEST(ScoredRepairs, AnExportThatIsNotTheCaseIsInvalidInput) {
   write_mesh(edge.input, cases / "noise-0" / "box_corner" / "input.ply");
   const RunSummary scored =
       score(cases, fresh_dir("scored_other_meshes"), "my_fill", fresh_dir("scored_other"));
+  int corner_records = 0;
   for (const auto& record : scored.records) {
     SCOPED_TRACE(record.job.id());
     if (record.job.case_id == "box/corner") {
+      ++corner_records;
       EXPECT_EQ(record.status, JobStatus::InvalidInput);
       EXPECT_NE(record.message.find("is not the case made again"), std::string::npos)
           << record.message;
     }
   }
+  EXPECT_EQ(corner_records, 1);  // the loop above checked the replaced export
 }
 
 TEST(ScoredRepairs, TheNamingRuleTriesTheJobThenTheCase) {
