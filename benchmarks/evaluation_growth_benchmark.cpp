@@ -10,6 +10,7 @@
 // The per-job time should not grow with the model (issue 49: at most 2x from level 0 to 3).
 //
 // Run: holebench_benchmarks --benchmark_filter=EvaluationGrowth
+#include "core/face_rings.h"
 #include "core/mesh_builder.h"
 #include "generators/case_catalog.h"
 #include "generators/hole_punch.h"
@@ -37,30 +38,15 @@ constexpr int kUntouchedRings = 4;  ///< the hole's faces and these rings keep t
 
 /// The faces of `mesh` within `rings` vertex rings of `faces` (and `faces` themselves).
 std::vector<bool> faces_near(const Mesh& mesh, const std::vector<int>& faces, int rings) {
-  std::vector<bool> near(mesh.n_faces(), false);
-  std::vector<bool> vertex_reached(mesh.n_vertices(), false);
-  std::vector<FaceHandle> front;
+  std::vector<VertexHandle> seeds;
   for (int f : faces) {
+    for (auto v : mesh.fv_range(FaceHandle(f)))
+      seeds.push_back(v);
+  }
+  const std::vector<char> within = faces_within_rings(mesh, seeds, rings);
+  std::vector<bool> near(within.begin(), within.end());
+  for (int f : faces)
     near[f] = true;
-    front.push_back(FaceHandle(f));
-  }
-  for (int ring = 0; ring < rings; ++ring) {
-    std::vector<FaceHandle> next;
-    for (auto f : front) {
-      for (auto v : mesh.fv_range(f)) {
-        if (vertex_reached[v.idx()])
-          continue;
-        vertex_reached[v.idx()] = true;
-        for (auto g : mesh.vf_range(v)) {
-          if (!near[g.idx()]) {
-            near[g.idx()] = true;
-            next.push_back(g);
-          }
-        }
-      }
-    }
-    front = std::move(next);
-  }
   return near;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/boundary_loops.h"
 #include "core/errors.h"
+#include "core/face_rings.h"
 #include "core/geometry.h"
 #include "generators/hole_punch.h"
 
@@ -85,28 +86,7 @@ MeshLoops classify_boundary_loops(const Mesh& mesh) {
 }
 
 std::vector<int> faces_around_loop(const Mesh& mesh, const BoundaryLoop& loop, int rings) {
-  std::vector<char> chosen(mesh.n_faces(), 0);
-  std::vector<VertexHandle> frontier = loop_vertices(mesh, loop);
-  std::vector<char> visited(mesh.n_vertices(), 0);
-  for (VertexHandle v : frontier)
-    visited[v.idx()] = 1;
-  for (int ring = 0; ring < rings; ++ring) {
-    std::vector<VertexHandle> next;
-    for (VertexHandle v : frontier) {
-      for (auto f : mesh.vf_range(v)) {
-        if (chosen[f.idx()])
-          continue;
-        chosen[f.idx()] = 1;
-        for (auto w : mesh.fv_range(f)) {
-          if (!visited[w.idx()]) {
-            visited[w.idx()] = 1;
-            next.push_back(w);
-          }
-        }
-      }
-    }
-    frontier = std::move(next);
-  }
+  const std::vector<char> chosen = faces_within_rings(mesh, loop_vertices(mesh, loop), rings);
   std::vector<int> faces;
   for (std::size_t f = 0; f < chosen.size(); ++f) {
     if (chosen[f])

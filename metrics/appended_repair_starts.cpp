@@ -13,7 +13,7 @@
 namespace holebench {
 namespace {
 
-constexpr double kUnknown = -1.0;  // a vertex distance not known yet (vertex_distances.cpp)
+constexpr double kUnknown = kUnknownVertexDistance;
 
 // A face's area as the mean search takes it: of its cell's corners (triangle_cell.h).
 double cell_area(const Mesh& mesh, FaceHandle f, const VertexDistances& vertices) {
@@ -61,14 +61,10 @@ AppendedRepairStarts::AppendedRepairStarts(const Mesh& input, const Mesh& comple
   complete_marked_.nearest_face.assign(complete.n_vertices(), -1);
   for (auto g : complete.faces()) {
     const int match = input_shared.a_face_of_b[g.idx()];
-    if (match < 0) {
+    if (match >= 0)
+      mark_vertices_on_shared_face(complete, g, match, complete_marked_);
+    else
       complete_unshared_faces_.push_back(g.idx());
-      continue;
-    }
-    for (auto v : complete.fv_range(g)) {
-      complete_marked_.distance[v.idx()] = 0.0;
-      complete_marked_.nearest_face[v.idx()] = match;
-    }
   }
   for (std::size_t v = 0; v < complete.n_vertices(); ++v) {
     if (complete_marked_.distance[v] == kUnknown)
@@ -98,12 +94,8 @@ std::optional<SearchStart> AppendedRepairStarts::repaired_to_complete(
   const std::vector<int> added = appended_faces(repaired, input_faces_);
   for (int f : added) {
     const int match = repaired_shared.b_face_of_a[f];
-    if (match < 0)
-      continue;
-    for (auto v : repaired.fv_range(FaceHandle(f))) {
-      start.vertices.distance[v.idx()] = 0.0;
-      start.vertices.nearest_face[v.idx()] = match;
-    }
+    if (match >= 0)
+      mark_vertices_on_shared_face(repaired, FaceHandle(f), match, start.vertices);
   }
   for (std::size_t v = input_vertices_; v < repaired.n_vertices(); ++v) {
     if (start.vertices.distance[v] != kUnknown)

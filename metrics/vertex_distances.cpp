@@ -12,22 +12,26 @@
 
 namespace holebench {
 
+void mark_vertices_on_shared_face(const Mesh& a, FaceHandle f, int match,
+                                  VertexDistances& distances) {
+  for (auto v : a.fv_range(f)) {
+    distances.distance[v.idx()] = 0.0;
+    distances.nearest_face[v.idx()] = match;
+  }
+}
+
 VertexDistances vertex_distances(const Mesh& a, const embree::TriangleScene& b_scene,
                                  const std::vector<int>* b_face_of_a,
                                  const EarlierVertexAnswer& earlier) {
-  constexpr double kUnknown = -1.0;
+  constexpr double kUnknown = kUnknownVertexDistance;
   VertexDistances result;
   result.distance.assign(a.n_vertices(), kUnknown);
   result.nearest_face.assign(a.n_vertices(), -1);
   if (b_face_of_a) {
     for (auto f : a.faces()) {
       const int match = (*b_face_of_a)[f.idx()];
-      if (match < 0)
-        continue;
-      for (auto v : f.vertices()) {
-        result.distance[v.idx()] = 0.0;
-        result.nearest_face[v.idx()] = match;
-      }
+      if (match >= 0)
+        mark_vertices_on_shared_face(a, f, match, result);
     }
   }
   // Blocks of consecutive vertices in parallel; inside a block, in index order, each query

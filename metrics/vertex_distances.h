@@ -26,6 +26,14 @@ struct VertexDistances {
   std::size_t queries = 0;
 };
 
+/// The distance of a vertex not known yet (in VertexDistances::distance while it is made).
+constexpr double kUnknownVertexDistance = -1.0;
+
+/// Marks the vertices of face `f` of A, which lies on face `match` of B: distance zero,
+/// nearest face `match` (a vertex on several such faces keeps the last one marked).
+void mark_vertices_on_shared_face(const Mesh& a, FaceHandle f, int match,
+                                  VertexDistances& distances);
+
 /// A closest-point answer found before for vertex `vertex` of A against B (by a search of
 /// the same point against the same triangles near it): true with its distance and face, or
 /// false. Called from several threads at once.
