@@ -8,6 +8,7 @@
 #include "core/mesh_builder.h"
 #include "generators/case_catalog.h"
 #include "harness/outputs/render/case_view.h"
+#include "harness/outputs/render/close_up.h"
 #include "harness/outputs/render/image.h"
 #include "harness/outputs/render/snapshot.h"
 #include "harness/run/heap_reuse.h"
@@ -432,6 +433,39 @@ void BM_Stage_EvaluationShared(benchmark::State& state) {
 }
 BENCHMARK(BM_Stage_EvaluationShared)
     ->ArgsProduct({{0, 1, 2}, {0, 25}})
+    ->Unit(benchmark::kMillisecond);
+
+// The snapshot of a job in a group (stages_s.snapshot without the PNG file): liepa_cgal's
+// result drawn with what the case's pictures share built once outside the timer, from the
+// whole repaired mesh (state.range(2) = 0) or over the case's views of its input (1, the
+// default: the cost of the patch).
+void BM_Stage_Snapshot(benchmark::State& state) {
+  const auto [c, result] = evaluated_job(state);
+  render::CloseUpOptions options;
+  options.draw_over_input_views = state.range(2) != 0;
+  const render::CasePicture shared(c, options);
+  for (auto _ : state) {
+    const render::Image picture = render::job_picture(c, result, shared, options);
+    benchmark::DoNotOptimize(picture.pixels.data());
+  }
+}
+BENCHMARK(BM_Stage_Snapshot)
+    ->ArgsProduct({{0, 1, 2}, {0, 25}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
+
+// What the pictures of a case's jobs share, built once per case instance (with the views of
+// the input when state.range(2) = 1).
+void BM_Stage_SnapshotShared(benchmark::State& state) {
+  const auto [c, result] = evaluated_job(state);
+  render::CloseUpOptions options;
+  options.draw_over_input_views = state.range(2) != 0;
+  for (auto _ : state) {
+    const render::CasePicture shared(c, options);
+    benchmark::DoNotOptimize(shared.hole_views().size());
+  }
+}
+BENCHMARK(BM_Stage_SnapshotShared)
+    ->ArgsProduct({{0, 1, 2}, {0, 25}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 // The five nightly methods on one case instance (fandisk edge hole, 25 % noise), in this

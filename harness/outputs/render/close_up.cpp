@@ -5,6 +5,7 @@
 #include "harness/outputs/render/case_view.h"
 #include "metrics/embree/near_face_distance.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/kept_faces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -138,6 +139,27 @@ Overlay job_overlay(const Case& c, const MethodResult& result) {
   return overlay;
 }
 
+SnapshotOptions view_options(const CloseUpOptions& options) {
+  SnapshotOptions snapshot;
+  snapshot.width = snapshot.height = options.view_size;
+  snapshot.samples_per_axis = options.samples_per_axis;
+  return snapshot;
+}
+
+/// Whether `repaired` is `input` with faces appended, none of the input's marked new (as
+/// the input's views show them); then `added` gets the faces after the input's.
+bool appends_unmarked(const Mesh& input, const Mesh& repaired, std::vector<int>& added) {
+  const KeptFaces kept = kept_faces(input, repaired);
+  if (!kept.appends_to_input())
+    return false;
+  for (std::size_t f = 0; f < input.n_faces(); ++f) {
+    if (is_new(repaired, repaired.face_handle(static_cast<int>(f))))
+      return false;
+  }
+  added = kept.repaired_faces_not_kept;  // as a scene of the whole mesh holds them
+  return true;
+}
+
 }  // namespace
 
 Rgb kept_colour() {
@@ -191,12 +213,25 @@ CasePicture::CasePicture(const Case& c, const CloseUpOptions& options)
       std::min(c.holes.size(), static_cast<std::size_t>(std::max(0, options.max_close_ups)));
   for (std::size_t hole = 0; hole < close_ups; ++hole)
     hole_views_.push_back(hole_view(c, hole, options));
+  whole_camera_ = whole_model_camera(
+      c, hole_views_.empty() ? Point(-1, -1, -1) : hole_views_.front().camera.direction);
+  if (!options.draw_over_input_views)
+    return;
+  const embree::TriangleScene input_scene(c.input);
+  SnapshotOptions snapshot = view_options(options);
+  snapshot.colouring = [](FaceHandle, const Point&) -> std::optional<Rgb> { return kept_colour(); };
+  for (const auto& view : hole_views_)
+    input_views_.push_back(input_view(c.input, input_scene, view.camera, snapshot));
+  input_views_.push_back(input_view(c.input, input_scene, whole_camera_, snapshot));
 }
 
 CasePicture::~CasePicture() = default;
 
 Image job_picture(const Case& c, const MethodResult& result, const CloseUpOptions& options) {
-  return job_picture(c, result, CasePicture(c, options), options);
+  // One picture: the input's views would cost more than they save.
+  CloseUpOptions alone = options;
+  alone.draw_over_input_views = false;
+  return job_picture(c, result, CasePicture(c, alone), options);
 }
 
 Image job_picture(const Case& c, const MethodResult& result, const CasePicture& shared,
@@ -205,9 +240,7 @@ Image job_picture(const Case& c, const MethodResult& result, const CasePicture& 
   const double diagonal = bounding_box(c.complete).diagonal();
   const embree::TriangleScene& truth = shared.complete_scene();
   const Mesh& mesh = result.repaired;
-  SnapshotOptions snapshot;
-  snapshot.width = snapshot.height = options.view_size;
-  snapshot.samples_per_axis = options.samples_per_axis;
+  SnapshotOptions snapshot = view_options(options);
   // Each patch face's nearby triangles of the complete model found once for its pixels: the
   // same distances as the scene's closest points (near_face_distance.h).
   embree::NearFaceDistance distances(mesh, truth);
@@ -218,18 +251,26 @@ Image job_picture(const Case& c, const MethodResult& result, const CasePicture& 
   };
   const Overlay overlay = job_overlay(c, result);
 
-  // One scene of the repaired mesh for every view.
-  const embree::TriangleScene scene(mesh);
+  std::vector<Camera> cameras;
+  for (const auto& view : shared.hole_views())
+    cameras.push_back(view.camera);
+  cameras.push_back(shared.whole_camera());
   std::vector<Image> views;
-  Point side(-1, -1, -1);
-  for (std::size_t hole = 0; hole < shared.hole_views().size(); ++hole) {
-    const HoleView& view = shared.hole_views()[hole];
-    if (hole == 0)
-      side = view.camera.direction;
-    views.push_back(render_with_depth(mesh, scene, view.camera, snapshot, overlay).image);
+  std::vector<int> added;
+  if (shared.input_views().size() == cameras.size() && appends_unmarked(c.input, mesh, added)) {
+    // The input's views with the repair's own faces traced over them.
+    std::unique_ptr<embree::TriangleScene> added_scene;
+    if (!added.empty())
+      added_scene = std::make_unique<embree::TriangleScene>(mesh, added);
+    for (const auto& input : shared.input_views())
+      views.push_back(
+          render_over_input_view(input, mesh, added, added_scene.get(), snapshot, overlay).image);
+  } else {
+    // One scene of the repaired mesh for every view.
+    const embree::TriangleScene scene(mesh);
+    for (const auto& camera : cameras)
+      views.push_back(render_with_depth(mesh, scene, camera, snapshot, overlay).image);
   }
-  views.push_back(
-      render_with_depth(mesh, scene, whole_model_camera(c, side), snapshot, overlay).image);
 
   const int gap = 4;
   const int width =

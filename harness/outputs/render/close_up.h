@@ -5,6 +5,7 @@
 #include "core/case.h"
 #include "core/method_result.h"
 #include "harness/outputs/render/heat_map.h"
+#include "harness/outputs/render/input_view.h"
 #include "harness/outputs/render/snapshot.h"
 
 #include <cstddef>
@@ -25,6 +26,12 @@ struct CloseUpOptions {
   /// A loop point counts as visible when nothing of the holed mesh lies between the eye and
   /// it closer than this share of the bounding-box diagonal to the point.
   double visibility_tolerance_rel_diag = 2e-3;
+  /// Draw a job's views over the case's views of its input where the repair appends to the
+  /// input (every input face kept at its index, none of them marked new: the picture of the
+  /// repaired mesh at the cost of its new faces, input_view.h); false: every view from the
+  /// whole repaired mesh. The same pictures either way, but for a sample whose ray meets an
+  /// input face and a new face at the same distance (the input face shows).
+  bool draw_over_input_views = true;
 };
 
 /// The view of one hole, chosen from the ground truth (which pictures may use; methods may
@@ -50,8 +57,10 @@ Camera whole_model_camera(const Case& c, const Point& direction);
 Camera hole_or_whole_camera(const Case& c, std::size_t hole = 0);
 
 /// What the pictures of one case's jobs share, whatever the method: the complete model's
-/// Embree scene (the patch's distances), the case's heat scale and the close-up views of its
-/// first holes. Built once per case instance for a group of jobs (harness/run/job.h).
+/// Embree scene (the patch's distances), the case's heat scale, the close-up views of its
+/// first holes and the whole model's camera, and (options.draw_over_input_views) each view of
+/// the input, sample by sample. Built once per case instance for a group of jobs
+/// (harness/run/job.h).
 class CasePicture {
  public:
   CasePicture(const Case& c, const CloseUpOptions& options = {});
@@ -63,11 +72,18 @@ class CasePicture {
   const HeatScale& scale() const { return scale_; }
   /// hole_view of the first min(holes, options.max_close_ups) holes.
   const std::vector<HoleView>& hole_views() const { return hole_views_; }
+  /// The whole model seen from the first hole's side.
+  const Camera& whole_camera() const { return whole_camera_; }
+  /// The input seen from each hole view's camera, then from whole_camera(), its faces in the
+  /// kept faces' colour; empty unless options.draw_over_input_views.
+  const std::vector<InputView>& input_views() const { return input_views_; }
 
  private:
   std::unique_ptr<embree::TriangleScene> complete_scene_;
   HeatScale scale_;
   std::vector<HoleView> hole_views_;
+  Camera whole_camera_;
+  std::vector<InputView> input_views_;
 };
 
 /// The picture of a job: one close-up per hole (up to options.max_close_ups), the whole

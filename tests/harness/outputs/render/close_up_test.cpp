@@ -3,6 +3,7 @@
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
+#include "tests/metrics/test_repairs.h"
 
 #include <gtest/gtest.h>
 
@@ -197,6 +198,40 @@ TEST(CloseUp, JobPictureWithTheCasesSharedPartsIsTheSame) {
     const Image with_shared = job_picture(c, *result, shared, options);
     ASSERT_EQ(alone.width, with_shared.width);
     EXPECT_TRUE(alone.pixels == with_shared.pixels);
+  }
+}
+
+// A job's picture drawn over the case's views of its input (where the repair appends to the
+// input) is the picture drawn from the whole repaired mesh, byte for byte: an exact closing
+// and a fan appended to the input, the open input, and a repair that does not append (the
+// complete model, which takes the whole mesh either way).
+TEST(CloseUp, JobPictureOverTheInputsViewsIsTheWholeRepairsPicture) {
+  for (const char* id : {"box/corner", "cad/fandisk/edge_convex/small"}) {
+    const Case c = generators::make_case(id, 0, 5.0);
+    CloseUpOptions whole;
+    whole.view_size = 80;
+    whole.draw_over_input_views = false;
+    CloseUpOptions over = whole;
+    over.draw_over_input_views = true;
+    const CasePicture shared_whole(c, whole), shared_over(c, over);
+    EXPECT_TRUE(shared_whole.input_views().empty());
+    EXPECT_EQ(shared_over.input_views().size(), shared_over.hole_views().size() + 1);
+    std::vector<MethodResult> results(4);
+    results[0].repaired = test::exact_appended_closing(c);
+    results[1].repaired = test::fan_closing(c.input);
+    for (std::size_t f = c.input.n_faces(); f < results[1].repaired.n_faces(); ++f)
+      results[1].repaired.data(FaceHandle(static_cast<int>(f))).provenance = Provenance::New;
+    results[2].repaired = c.input;
+    results[3].repaired = c.complete;
+    for (const auto& hole : c.holes)
+      for (int f : hole.removed_faces)
+        results[3].repaired.data(FaceHandle(f)).provenance = Provenance::New;
+    for (const auto& result : results) {
+      const Image a = job_picture(c, result, shared_whole, whole);
+      const Image b = job_picture(c, result, shared_over, over);
+      ASSERT_EQ(a.width, b.width);
+      EXPECT_TRUE(a.pixels == b.pixels) << id;
+    }
   }
 }
 
