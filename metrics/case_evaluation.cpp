@@ -31,6 +31,13 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
       input_scene_ = std::make_unique<embree::TriangleScene>(c.input);
       complete_cell_bounds_ = std::make_unique<MeanCellBounds>(
           c.complete, *input_scene_, first_pass(c.complete, c.input, *input_scene_), mean);
+      if (options.literature_metrics) {
+        NormalConeOptions cone;
+        cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
+        complete_cone_answers_ = std::make_unique<InputConeAnswers>(
+            tally_samples(c.complete, options.literature_samples, *complete_sampled_faces_),
+            *input_scene_, cone);
+      }
     }
   }
   if (options.self_intersections)

@@ -7,6 +7,7 @@
 #include "core/case.h"
 #include "metrics/appended_repair_starts.h"
 #include "metrics/evaluation.h"
+#include "metrics/input_cone_answers.h"
 #include "metrics/input_topology.h"
 #include "metrics/literature_metrics.h"
 #include "metrics/surface_distance.h"
@@ -67,6 +68,10 @@ class CaseEvaluation {
     return complete_sampled_faces_ ? &*complete_sampled_faces_ : nullptr;
   }
   const std::vector<double>& complete_face_areas() const { return complete_face_areas_; }
+  /// The normal cones at the complete model's literature samples (the points its tally
+  /// gives) against the input (input_cone_answers.h), or nullptr where the case has no
+  /// complete model, no input faces or no literature metrics.
+  const InputConeAnswers* complete_cone_answers() const { return complete_cone_answers_.get(); }
   /// The input's faces' first Hausdorff bounds against the complete model, or nullptr.
   const HausdorffCellBounds* input_hausdorff_bounds() const {
     return input_hausdorff_bounds_.get();
@@ -96,6 +101,7 @@ class CaseEvaluation {
   std::unique_ptr<AppendedRepairStarts> appended_repair_starts_;
   std::optional<SampledFaces> input_sampled_faces_;
   std::optional<SampledFaces> complete_sampled_faces_;
+  std::unique_ptr<InputConeAnswers> complete_cone_answers_;
   std::vector<double> complete_face_areas_;
   std::optional<InputSelfIntersections> input_self_intersections_;
   InputTopology input_topology_;

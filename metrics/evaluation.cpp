@@ -374,11 +374,24 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   // Faces the two models share exactly count exactly (distance 0, the same normal).
   const SharedFaces& shared = regions.shared;
   const KnownSampledFaces tallies = known_sampled_faces(c, result.repaired, shared, known, kept);
+  // The complete model's samples against the repair: where they are the case's samples and
+  // the repair's scene is the input's plus its patch, the case's answers against the input
+  // with the patch's added (input_cone_answers.h: the same numbers), unless the hole region
+  // answered them already.
+  const SampledAnswers* complete_answers = &truth_answers;
+  SampledAnswers with_patch;
+  const InputConeAnswers* input_cones = known ? known->complete_cone_answers() : nullptr;
+  if (input_cones && tallies.complete && tallies.complete == known->complete_sampled_faces() &&
+      repaired_scene.base_part() == &input_cones->input_scene() &&
+      truth_answers.points != input_cones->points()) {
+    with_patch = input_cones->with_patch(repaired_scene.added_part());
+    complete_answers = &with_patch;
+  }
   add_agreement(
       out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
       sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
                         &patch_answers, nullptr, tallies.repaired ? &*tallies.repaired : nullptr),
-      sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, &truth_answers,
+      sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, complete_answers,
                         nullptr, tallies.complete));
   if (hole) {
     add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,

@@ -175,6 +175,12 @@ AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<boo
   return samples_on(a, count, faces, cumulative);
 }
 
+AreaSamples tally_samples(const Mesh& a, std::size_t count, const SampledFaces& tally) {
+  if (!(tally.area > 0.0) || !(tally.area - tally.shared_area > 0.0))
+    return {};
+  return samples_on(a, count, tally.faces, tally.cumulative);
+}
+
 namespace {
 
 // The normal cone's answer at each sample: `known`'s where it took the same points (and
@@ -213,9 +219,7 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
   agreement.sampled_area = agreement.area - tally.shared_area;
   const double shared_share = tally.shared_area / agreement.area;
   const double sampled_share = 1.0 - shared_share;
-  const AreaSamples samples = agreement.sampled_area > 0.0
-                                  ? samples_on(a, options.samples, tally.faces, tally.cumulative)
-                                  : AreaSamples{};
+  const AreaSamples samples = tally_samples(a, options.samples, tally);
   agreement.samples = samples.points.size();
   std::vector<std::size_t> within(options.thresholds.size(), 0);
   double cosine_sum = 0.0;

@@ -123,6 +123,10 @@ struct AreaSamples {
 };
 AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip = nullptr);
 
+/// The points sampled_agreement() takes on A with `tally` (A's sampled_faces()) and `count`
+/// samples, with their faces and normals: none where A has no unshared area.
+AreaSamples tally_samples(const Mesh& a, std::size_t count, const SampledFaces& tally);
+
 /// F-score from precision and recall (0 where both are 0).
 double f_score(double precision, double recall);
 

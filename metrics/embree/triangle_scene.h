@@ -100,6 +100,16 @@ class TriangleScene {
 
   std::size_t triangle_count() const;
 
+  /// A scene made of a base scene and an added one (the constructor from a base): the base,
+  /// else nullptr.
+  const TriangleScene* base_part() const { return base_; }
+  /// A scene made of a base scene and an added one: the added one (nullptr where nothing was
+  /// added, or for a scene built from faces).
+  const TriangleScene* added_part() const { return added_.get(); }
+  /// The triangles of a scene built from faces, in primitive order (empty for a scene made of
+  /// parts).
+  const std::vector<std::array<Point, 3>>& triangles() const { return triangles_; }
+
  private:
   /// The nearest triangle among those within `distance_upper_bound` (padded past it by the
   /// single-precision rounding), or face -1 and an infinite distance where there is none.
