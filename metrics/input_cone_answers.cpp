@@ -36,14 +36,12 @@ struct ConeFold {
   }
 };
 
-/// Smallest distance from `p` to the box of `triangles` (infinity for none): no triangle
-/// lies nearer.
-double box_distance(const Point& p, const std::vector<std::array<Point, 3>>& triangles, Point& low,
-                    Point& high, bool& made) {
-  if (!made) {
-    made = true;
-    low = Point(1, 1, 1) * std::numeric_limits<double>::infinity();
-    high = -low;
+/// The box of a scene's triangles: no triangle lies nearer a point than the box does.
+struct TriangleBox {
+  Point low = Point(1, 1, 1) * std::numeric_limits<double>::infinity();
+  Point high = -Point(1, 1, 1) * std::numeric_limits<double>::infinity();
+
+  explicit TriangleBox(const std::vector<std::array<Point, 3>>& triangles) {
     for (const auto& t : triangles) {
       for (const Point& c : t) {
         low.minimize(c);
@@ -51,15 +49,18 @@ double box_distance(const Point& p, const std::vector<std::array<Point, 3>>& tri
       }
     }
   }
-  if (triangles.empty())
-    return std::numeric_limits<double>::infinity();
-  double sum = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double out = std::max({0.0, low[k] - p[k], p[k] - high[k]});
-    sum += out * out;
+  /// Infinity for a box of no triangles.
+  double distance(const Point& p) const {
+    if (!(low[0] <= high[0]))
+      return std::numeric_limits<double>::infinity();
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double out = std::max({0.0, low[k] - p[k], p[k] - high[k]});
+      sum += out * out;
+    }
+    return std::sqrt(sum);
   }
-  return std::sqrt(sum);
-}
+};
 
 }  // namespace
 
@@ -92,16 +93,14 @@ InputConeAnswers::InputConeAnswers(const AreaSamples& samples,
 SampledAnswers InputConeAnswers::with_patch(const embree::TriangleScene* patch) const {
   SampledAnswers out{points_, normals_, {}};
   out.cones.reserve(points_.size());
-  Point low, high;
-  bool box_made = false;
+  const TriangleBox box(patch ? patch->triangles() : std::vector<std::array<Point, 3>>{});
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const Point& p = points_[i];
     const double input_radius = nearest_[i] + options_.tolerance;
     // The patch's box lies beyond the input's radius (with a margin far above the rounding of
     // the two distances): no patch face is nearer than the input or within the radius.
     const double margin = 1e-9 * (input_radius + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
-    const bool patch_near =
-        patch && box_distance(p, patch->triangles(), low, high, box_made) <= input_radius + margin;
+    const bool patch_near = patch && box.distance(p) <= input_radius + margin;
     embree::ClosestPoint from_patch;
     from_patch.distance = std::numeric_limits<double>::infinity();
     if (patch_near)
