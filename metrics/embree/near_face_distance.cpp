@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace holebench::embree {
 
@@ -23,7 +25,7 @@ double margin_at(const Point& p, double distance) {
 
 NearFaceDistance::NearFaceDistance(const Mesh& mesh, const TriangleScene& scene,
                                    const NearFaceDistanceOptions& options)
-    : mesh_(mesh), scene_(scene), options_(options), faces_(mesh.n_faces()) {}
+    : mesh_(mesh), scene_(scene), options_(options) {}
 
 void NearFaceDistance::make(FaceHandle f, FaceCandidates& face) const {
   face.made = true;
@@ -57,7 +59,10 @@ void NearFaceDistance::make(FaceHandle f, FaceCandidates& face) const {
 }
 
 double NearFaceDistance::distance(FaceHandle f, const Point& p) {
-  FaceCandidates& face = faces_.at(static_cast<std::size_t>(f.idx()));
+  if (f.idx() < 0 || static_cast<std::size_t>(f.idx()) >= mesh_.n_faces())
+    throw std::out_of_range("NearFaceDistance: face " + std::to_string(f.idx()) +
+                            " is not a face of the mesh");
+  FaceCandidates& face = faces_[f.idx()];
   if (!face.made)
     make(f, face);
   if (face.usable) {

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 namespace holebench::embree {
@@ -65,7 +66,9 @@ class NearFaceDistance {
   const Mesh& mesh_;
   const TriangleScene& scene_;
   NearFaceDistanceOptions options_;
-  std::vector<FaceCandidates> faces_;
+  /// By face index, made at the face's first point: a picture asks about its patch's faces
+  /// only, so nothing is held (or allocated) for the rest of the mesh.
+  std::unordered_map<int, FaceCandidates> faces_;
   std::size_t local_answers_ = 0;
   std::size_t scene_answers_ = 0;
   bool last_ = false;
