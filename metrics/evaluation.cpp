@@ -381,7 +381,7 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   const SampledAnswers* complete_answers = &truth_answers;
   SampledAnswers with_patch;
   const InputConeAnswers* input_cones = known ? known->complete_cone_answers() : nullptr;
-  if (input_cones && tallies.complete && tallies.complete == known->complete_sampled_faces() &&
+  if (input_cones && tallies.complete == known->complete_sampled_faces() &&
       repaired_scene.base_part() == &input_cones->input_scene() &&
       truth_answers.points != input_cones->points()) {
     with_patch = input_cones->with_patch(repaired_scene.added_part());

@@ -7,6 +7,8 @@
 
 #include "core/mesh.h"
 
+#include <array>
+
 namespace holebench {
 
 namespace embree {
@@ -27,6 +29,20 @@ struct NormalConeAngle {
   double largest_abs_cosine = 0.0;
   double nearest_distance = 0.0;  ///< d(p, surface)
   int cone_faces = 0;             ///< faces in the cone (at least the nearest)
+};
+
+/// A face's term in the cone: the cosine of the unit normal `n` with triangle `t`'s unit
+/// normal, clamped to [-1, 1].
+double cone_cosine(const Point& n, const std::array<Point, 3>& t);
+
+/// The cone's angles folded over its faces' cosines (maxima: in any order, the same).
+struct NormalConeFold {
+  double largest_cosine = -1.0;
+  NormalConeAngle cone;  ///< largest_abs_cosine and cone_faces so far
+
+  void add(double cosine);
+  /// The angles of the faces added, at the nearest distance `nearest_distance`.
+  NormalConeAngle finish(double nearest_distance) const;
 };
 
 /// The normal cone of the surface of `scene` at `p`, compared with the unit normal `n`.

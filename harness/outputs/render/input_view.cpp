@@ -63,31 +63,30 @@ InputView input_view(const Mesh& mesh, const embree::TriangleScene& scene, const
                      const SnapshotOptions& options) {
   InputView out;
   out.camera = camera;
-  out.width = options.width;
-  out.height = options.height;
   out.samples_per_axis = std::max(1, options.samples_per_axis);
   const int n = out.samples_per_axis;
   const std::size_t per_pixel = static_cast<std::size_t>(n) * n;
-  const std::size_t pixels = static_cast<std::size_t>(out.width) * out.height;
+  const int width = options.width, height = options.height;
+  const std::size_t pixels = static_cast<std::size_t>(width) * height;
   out.distance.resize(pixels * per_pixel);
   out.colour.resize(pixels * per_pixel);
-  out.picture.image = Image(out.width, out.height);
+  out.picture.image = Image(width, height);
   out.picture.depth.assign(pixels, std::numeric_limits<double>::infinity());
-  const View view(camera, out.width, out.height);
+  const View view(camera, width, height);
   std::vector<Point> directions;
   std::vector<embree::RayHit> hits;
-  for (int y = 0; y < out.height; ++y) {
-    row_directions(view, y, 0, out.width, n, directions);
+  for (int y = 0; y < height; ++y) {
+    row_directions(view, y, 0, width, n, directions);
     scene.intersect_coherent(view.eye, directions, hits);
-    for (int x = 0; x < out.width; ++x) {
-      const std::size_t pixel = static_cast<std::size_t>(y) * out.width + x;
+    for (int x = 0; x < width; ++x) {
+      const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
       Rgb sum;
       for (std::size_t k = per_pixel * x; k < per_pixel * (x + 1); ++k) {
         const std::size_t sample = pixel * per_pixel + (k - per_pixel * x);
         const embree::RayHit& hit = hits[k];
         Rgb colour;
         if (!hit.hit) {
-          colour = background_colour(y, out.height);
+          colour = background_colour(y, height);
           out.distance[sample] = std::numeric_limits<float>::infinity();
         } else {
           const Point unit = directions[k] / directions[k].norm();
@@ -112,12 +111,13 @@ Rendering render_over_input_view(const InputView& input, const Mesh& mesh,
                                  const std::vector<int>& added,
                                  const embree::TriangleScene* added_scene,
                                  const SnapshotOptions& options, const Overlay& overlay) {
-  if (options.width != input.width || options.height != input.height ||
+  const int width = input.picture.image.width, height = input.picture.image.height;
+  if (options.width != width || options.height != height ||
       std::max(1, options.samples_per_axis) != input.samples_per_axis)
     throw std::invalid_argument(
         "render_over_input_view: the options' size or supersampling "
         "is not the input view's");
-  const View view(input.camera, input.width, input.height);
+  const View view(input.camera, width, height);
   const SolidScene solids = solid_scene(overlay);
   // Only the pixels that the added faces or the overlay's solids can show in are traced.
   PixelRectOfPoints points(view);
@@ -143,7 +143,7 @@ Rendering render_over_input_view(const InputView& input, const Mesh& mesh,
     if (solids.scene)
       solids.scene->intersect_coherent(view.eye, directions, solid_hits);
     for (int x = rect.x_begin; x < rect.x_end; ++x) {
-      const std::size_t pixel = static_cast<std::size_t>(y) * input.width + x;
+      const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
       double& d = out.depth[pixel];
       d = std::numeric_limits<double>::infinity();
       Rgb sum;

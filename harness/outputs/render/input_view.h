@@ -21,7 +21,7 @@ namespace holebench::render {
 /// primary_rays.
 struct InputView {
   Camera camera;
-  int width = 0, height = 0, samples_per_axis = 1;
+  int samples_per_axis = 1;     ///< the size is the picture's
   std::vector<float> distance;  ///< per sample, the first hit's distance; infinity: none
   std::vector<Rgb> colour;      ///< per sample, its shaded colour (the background where none)
   Rendering picture{Image(0, 0), {}};  ///< M0 alone, without overlay: pixels and depth
