@@ -1,7 +1,7 @@
 #include "metrics/feature_recovery.h"
 
-#include "core/distances.h"
 #include "core/geometry.h"
+#include "core/nearest_segment.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/face_subset.h"
 #include "metrics/growing_box.h"
@@ -29,10 +29,6 @@ std::vector<Point> sample_polyline(const std::vector<Point>& polyline, double sp
   }
   return samples;
 }
-
-struct Segment {
-  Point a, b;
-};
 
 // The distance from `corner` to the nearest vertex of `mesh` from index `first` on.
 double nearest_vertex_distance(const Mesh& mesh, const Point& corner, std::size_t first) {
@@ -76,8 +72,8 @@ class WholeMeshSharpEdges {
         sharp_.push_back({repaired.point(e.v0()), repaired.point(e.v1())});
     }
   }
-  std::vector<Segment> meeting(const GrowingBox& box) const {
-    std::vector<Segment> near;
+  std::vector<SegmentEnds> meeting(const GrowingBox& box) const {
+    std::vector<SegmentEnds> near;
     for (const auto& s : sharp_) {
       if (segment_meets(box, s.a, s.b))
         near.push_back(s);
@@ -86,7 +82,7 @@ class WholeMeshSharpEdges {
   }
 
  private:
-  std::vector<Segment> sharp_;
+  std::vector<SegmentEnds> sharp_;
 };
 
 // The repaired mesh's sharp edges near a box, from the input's regions: segment_regions makes
@@ -114,8 +110,8 @@ class SharpEdgesFromInput {
     }
   }
 
-  std::vector<Segment> meeting(const GrowingBox& box) const {
-    std::vector<Segment> near;
+  std::vector<SegmentEnds> meeting(const GrowingBox& box) const {
+    std::vector<SegmentEnds> near;
     const Point centre = (box.lo + box.hi) * 0.5;
     const double radius = 0.5 * (box.hi - box.lo).norm() * (1.0 + 1e-9);
     std::vector<int> edges;
@@ -230,15 +226,12 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
         const auto samples = sample_polyline(polyline, options.edge_sample_spacing);
         // Only sharp edges that can be within the search radius of the polyline.
         const GrowingBox box = polyline_box(polyline, options.edge_search_radius);
-        const std::vector<Segment> near =
-            from_input ? from_input->meeting(box) : whole->meeting(box);
+        const NearestSegment near(from_input ? from_input->meeting(box) : whole->meeting(box));
         std::size_t covered = 0;
         bool all_near = !samples.empty();
         double farthest = 0.0;
         for (const Point& p : samples) {
-          double best = std::numeric_limits<double>::infinity();
-          for (const auto& s : near)
-            best = std::min(best, point_segment_distance(p, s.a, s.b));
+          const double best = near.distance(p);
           if (best <= options.edge_tolerance)
             ++covered;
           if (best <= options.edge_search_radius)

@@ -1,7 +1,7 @@
 #include "metrics/literature_metrics.h"
 
-#include "core/distances.h"
 #include "core/geometry.h"
+#include "core/nearest_segment.h"
 #include "core/portable_math.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/face_subset.h"
@@ -33,14 +33,10 @@ Point in_triangle(const Point& a, const Point& b, const Point& c, double u, doub
   return a + (b - a) * u + (c - a) * v;
 }
 
-struct EdgeSegment {
-  Point a, b;
-};
-
 // The sharp edges (|dihedral| >= the threshold) of `mesh` that bound a face of `faces`, in
 // edge index order (the order of a pass over every edge): found from those faces' own edges,
 // at the cost of the region. Boundary edges have no dihedral angle and are not sharp.
-std::vector<EdgeSegment> sharp_edges_around(const Mesh& mesh, double sharp_angle_degrees,
+std::vector<SegmentEnds> sharp_edges_around(const Mesh& mesh, double sharp_angle_degrees,
                                             const std::vector<int>& faces) {
   const double threshold = sharp_angle_degrees * kPi / 180.0;
   std::vector<int> edge_indices;
@@ -50,7 +46,7 @@ std::vector<EdgeSegment> sharp_edges_around(const Mesh& mesh, double sharp_angle
   }
   std::sort(edge_indices.begin(), edge_indices.end());
   edge_indices.erase(std::unique(edge_indices.begin(), edge_indices.end()), edge_indices.end());
-  std::vector<EdgeSegment> edges;
+  std::vector<SegmentEnds> edges;
   for (int index : edge_indices) {
     const EdgeHandle e(index);
     if (mesh.status(e).deleted() || mesh.is_boundary(e))
@@ -68,7 +64,7 @@ struct EdgeSample {
   double length = 0.0;
 };
 
-std::vector<EdgeSample> sample_segments(const std::vector<EdgeSegment>& segments, double spacing) {
+std::vector<EdgeSample> sample_segments(const std::vector<SegmentEnds>& segments, double spacing) {
   std::vector<EdgeSample> samples;
   for (const auto& s : segments) {
     const double length = (s.b - s.a).norm();
@@ -81,12 +77,11 @@ std::vector<EdgeSample> sample_segments(const std::vector<EdgeSegment>& segments
 
 // The length-weighted mean distance of the samples to the nearest segment.
 double mean_distance_to_segments(const std::vector<EdgeSample>& samples,
-                                 const std::vector<EdgeSegment>& segments) {
+                                 const std::vector<SegmentEnds>& segments) {
+  const NearestSegment nearest(segments);
   double sum = 0.0, length = 0.0;
   for (const auto& sample : samples) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& s : segments)
-      best = std::min(best, point_segment_distance(sample.point, s.a, s.b));
+    const double best = nearest.distance(sample.point);
     sum += best * sample.length;
     length += sample.length;
   }
