@@ -7,8 +7,8 @@
 
 #include "metrics/triangle_cell.h"
 
+#include <algorithm>
 #include <cstddef>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -25,6 +25,9 @@ struct LargerPriorityFirst {
 };
 
 /// Cells by LargerPriorityFirst; the queue stamps each cell's creation order as it takes it.
+/// The heap holds each cell's priority, order and slot, the cells stay in their slots (a cell
+/// is some 200 bytes, a key 24): the same comparisons in the same sequence as a heap of the
+/// cells themselves, so the same cells pop in the same order, with less moved per step.
 template <class Cell>
 class CellQueue {
  public:
@@ -32,23 +35,54 @@ class CellQueue {
   /// the order given: the same queue as pushing them one by one, since the order is total.
   /// Call it on an empty queue.
   void start(std::vector<Cell> cells) {
-    for (Cell& cell : cells)
-      cell.order = next_order_++;
-    heap_ = Heap(LargerPriorityFirst{}, std::move(cells));
+    cells_ = std::move(cells);
+    heap_.reserve(cells_.size());
+    for (std::size_t slot = 0; slot < cells_.size(); ++slot) {
+      cells_[slot].order = next_order_++;
+      heap_.push_back({cells_[slot].priority, cells_[slot].order, slot});
+    }
+    std::make_heap(heap_.begin(), heap_.end(), KeyOrder{});
   }
 
   void push(Cell cell) {
     cell.order = next_order_++;
-    heap_.push(std::move(cell));
+    std::size_t slot = cells_.size();
+    if (free_slots_.empty()) {
+      cells_.push_back(std::move(cell));
+    } else {
+      slot = free_slots_.back();
+      free_slots_.pop_back();
+      cells_[slot] = std::move(cell);
+    }
+    heap_.push_back({cells_[slot].priority, cells_[slot].order, slot});
+    std::push_heap(heap_.begin(), heap_.end(), KeyOrder{});
   }
 
   bool empty() const { return heap_.empty(); }
-  const Cell& top() const { return heap_.top(); }
-  void pop() { heap_.pop(); }
+  const Cell& top() const { return cells_[heap_.front().slot]; }
+  void pop() {
+    free_slots_.push_back(heap_.front().slot);
+    std::pop_heap(heap_.begin(), heap_.end(), KeyOrder{});
+    heap_.pop_back();
+  }
 
  private:
-  using Heap = std::priority_queue<Cell, std::vector<Cell>, LargerPriorityFirst>;
-  Heap heap_;
+  struct Key {
+    double priority = 0.0;
+    std::size_t order = 0;
+    std::size_t slot = 0;
+  };
+  /// LargerPriorityFirst on the keys.
+  struct KeyOrder {
+    bool operator()(const Key& x, const Key& y) const {
+      if (x.priority != y.priority)
+        return x.priority < y.priority;
+      return x.order > y.order;
+    }
+  };
+  std::vector<Cell> cells_;              ///< queued cells and free slots
+  std::vector<std::size_t> free_slots_;  ///< slots of popped cells, reused by push()
+  std::vector<Key> heap_;
   std::size_t next_order_ = 0;
 };
 
