@@ -5,6 +5,7 @@
 #include "core/mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace holebench {
@@ -43,6 +44,13 @@ inline Point closest_point_on_triangle(const Point& p, const Point& a, const Poi
   }
   const double denominator = 1.0 / (va + vb + vc);
   return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+/// The distance from p to the triangle t: |closest_point_on_triangle(p, t) - p|. The one
+/// expression TriangleScene's radius query compares with its radius, so that a caller who
+/// measures the faces it returns gets the numbers the query weighed.
+inline double point_triangle_distance(const Point& p, const std::array<Point, 3>& t) {
+  return (closest_point_on_triangle(p, t[0], t[1], t[2]) - p).norm();
 }
 
 /// The distance from p to the segment [a, b] (to a when the segment is a point).

@@ -9,15 +9,6 @@
 #include <limits>
 
 namespace holebench {
-namespace {
-
-double face_distance(const Point& p, const std::array<Point, 3>& t) {
-  // The expression TriangleScene's radius query compares with its radius.
-  return (closest_point_on_triangle(p, t[0], t[1], t[2]) - p).norm();
-}
-
-}  // namespace
-
 InputConeAnswers::InputConeAnswers(const AreaSamples& samples,
                                    const embree::TriangleScene& input_scene,
                                    const NormalConeOptions& options)
@@ -38,7 +29,7 @@ InputConeAnswers::InputConeAnswers(const AreaSamples& samples,
                           : 0.0);
     for (int face : input_scene.faces_within(p, nearest.distance + options.tolerance)) {
       const auto& t = input_scene.triangle_of_face(face);
-      near_.push_back({face_distance(p, t), cone_cosine(normals_[i], t)});
+      near_.push_back({point_triangle_distance(p, t), cone_cosine(normals_[i], t)});
     }
   }
   first_near_.push_back(near_.size());

@@ -90,8 +90,7 @@ bool radius_callback(RTCPointQueryFunctionArguments* args) {
   if (state->overflow)
     return false;
   const auto& tri = (*state->triangles)[args->primID];
-  const Point q = closest_point_on_triangle(state->query, tri[0], tri[1], tri[2]);
-  if ((q - state->query).norm() <= state->radius)
+  if (point_triangle_distance(state->query, tri) <= state->radius)
     state->primitives.push_back(args->primID);
   if (state->primitives.size() <= state->max_primitives)
     return false;  // the radius never shrinks, unless the count is past the limit:

@@ -73,7 +73,8 @@ class TriangleScene {
   /// is the same as without the bound (as long as the bound holds).
   ClosestPoint closest_point(const Point& p, double distance_upper_bound) const;
 
-  /// Every face within `radius` of `p` (exact double-precision distances), by face index.
+  /// Every face within `radius` of `p`, by face index: those whose point_triangle_distance()
+  /// (core/distances.h, in double precision) is at most `radius`.
   std::vector<int> faces_within(const Point& p, double radius) const;
 
   /// The same, or nothing when more than `max_faces` faces are within `radius` (the search
