@@ -112,10 +112,8 @@ class SharpEdgesFromInput {
 
   std::vector<SegmentEnds> meeting(const GrowingBox& box) const {
     std::vector<SegmentEnds> near;
-    const Point centre = (box.lo + box.hi) * 0.5;
-    const double radius = 0.5 * (box.hi - box.lo).norm() * (1.0 + 1e-9);
     std::vector<int> edges;
-    for (int f : known_.repaired_scene->faces_within(centre, radius)) {
+    for (int f : known_.repaired_scene->faces_within(box.centre(), box.enclosing_radius())) {
       if (repaired_.status(FaceHandle(f)).deleted())
         continue;
       for (auto h : repaired_.fh_range(FaceHandle(f)))

@@ -36,6 +36,11 @@ struct GrowingBox {
     }
     return std::sqrt(squared);
   }
+  /// The centre of the box, and the radius of a ball about it that holds the box: half its
+  /// diagonal, padded by 1e-6 of itself so that rounding leaves no corner outside. A scene's
+  /// faces_within(centre(), enclosing_radius()) holds every face with a point in the box.
+  Point centre() const { return (lo + hi) * 0.5; }
+  double enclosing_radius() const { return 0.5 * (hi - lo).norm() * (1.0 + 1e-6); }
   /// The largest absolute coordinate of the box: the scale of rounding near it.
   double magnitude() const {
     return std::max({std::abs(lo[0]), std::abs(lo[1]), std::abs(lo[2]), std::abs(hi[0]),

@@ -61,9 +61,7 @@ std::vector<int> kept_faces_meeting(const Mesh& repaired, const KeptFaces& kept,
   const auto is_kept = [&](int f) { return kept.input_face_of_repaired[f] >= 0; };
   std::vector<int> meeting;
   if (scene) {
-    const Point centre = (box.lo + box.hi) * 0.5;
-    const double radius = 0.5 * (box.hi - box.lo).norm() * (1.0 + 1e-6);
-    for (int f : scene->faces_within(centre, radius)) {
+    for (int f : scene->faces_within(box.centre(), box.enclosing_radius())) {
       if (is_kept(f) && !repaired.status(FaceHandle(f)).deleted() &&
           face_box(repaired, FaceHandle(f)).meets(box))
         meeting.push_back(f);

@@ -86,7 +86,12 @@ std::vector<Job> plan_jobs(const RunOptions& options, const generators::CaseCata
       for (const auto& user : options.suite.users) {
         for (double noise : options.suite.noise_levels) {
           for (auto seed : options.suite.seeds) {
-            Job job{c.id, method_id, noise, seed, user};
+            Job job;
+            job.case_id = c.id;
+            job.method_id = method_id;
+            job.noise_percent = noise;
+            job.seed = seed;
+            job.user = user;
             if (const auto it = external.find(method_id); it != external.end())
               job.external = it->second;
             else

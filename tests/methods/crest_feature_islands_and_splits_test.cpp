@@ -99,8 +99,9 @@ TEST(CrestFeatureIslands, HoleAroundAnIslandIsFilledAsTheRegionBetween) {
     EXPECT_EQ(metric(e, "is_manifold"), 1.0) << id;
     EXPECT_EQ(metric(e, "self_intersections_count"), 0.0) << id;
     EXPECT_EQ(metric(e, "original_faces_unchanged_ok"), 1.0) << id;
-    if (id != "solid/cylinder/island/small")
+    if (id != "solid/cylinder/island/small") {
       EXPECT_LT(metric(e, "hole_hausdorff_rel_diag"), 1e-12) << id;
+    }
   }
 }
 
@@ -179,8 +180,9 @@ TEST(CrestFeaturePlanaritySplit, FoldedLoopIsCutAlongTheFold) {
     // they come in the loop's order.
     for (std::size_t k = 0; k + 1 < piece.nodes.size(); ++k) {
       const Node a = piece.nodes[k], b = piece.nodes[k + 1];
-      if (a >= 0 && b >= 0)
+      if (a >= 0 && b >= 0) {
         EXPECT_EQ((a + 1) % static_cast<Node>(loop.size()), b);
+      }
     }
   }
   // Two planar polygons with n1 + n2 = loop + 2 * (chord points + 2) - 2 shared ... every
