@@ -336,7 +336,7 @@ KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
       new_areas[f - first] = face_area(repaired, face);
     new_face_on_complete = new_face_on_complete || shared.b_face_of_a[f] >= 0;
   }
-  tallies.repaired = *known->input_sampled_faces();
+  tallies.repaired = continued_tally(*known->input_sampled_faces());
   tally_faces(new_areas, &shared.b_face_of_a, first, *tallies.repaired);
   if (new_face_on_complete) {
     tallies.complete_made = sampled_faces(known->complete_face_areas(), &shared.a_face_of_b);
@@ -466,8 +466,9 @@ void add_validity(const Case& c, const MethodResult& result, const std::vector<i
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
-  const Validity v = validity(c.input, result.repaired, validity_options, known_input, kept,
-                              shared ? &shared->input_topology() : nullptr, repaired_scene);
+  const Validity v =
+      validity(c.input, result.repaired, validity_options, known_input, kept,
+               shared ? &shared->input_topology() : nullptr, repaired_scene, &new_faces);
   out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
   out.add_flag(kIsClosed, v.open_boundary_loops == 0);
   out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);
@@ -646,6 +647,7 @@ Evaluation evaluate_with(const Case& c, const MethodResult& result,
     }
     // What the case knows of the input, where the repair kept it (feature_recovery.h).
     FeatureRecoveryShortcuts shortcuts;
+    shortcuts.new_faces = &new_faces;
     if (shared && kept) {
       if (kept->input_vertices_kept)
         shortcuts.input_corner_distances = &shared->input_corner_distances();

@@ -110,14 +110,31 @@ class SharpEdgesFromInput {
     }
   }
 
-  std::vector<SegmentEnds> meeting(const GrowingBox& box) const {
+  // The sharp edges that meet `box` (the polyline's, grown by `radius`) among those within
+  // `radius` of the polyline, and perhaps others: what WholeMeshSharpEdges::meeting() gives,
+  // less edges farther than `radius` from every point of the polyline, which no sample
+  // weighs (a nearest distance past the search radius counts as none). The faces are found
+  // about each of the polyline's segments (a ball about its midpoint holding the segment
+  // grown by `radius`: a face with a point within `radius` of the segment), not in the
+  // box's enclosing ball, which on a long diagonal edge holds much more of the model.
+  std::vector<SegmentEnds> meeting(const GrowingBox& box, const std::vector<Point>& polyline,
+                                   double radius) const {
     std::vector<SegmentEnds> near;
     std::vector<int> edges;
-    for (int f : known_.repaired_scene->faces_within(box.centre(), box.enclosing_radius())) {
-      if (repaired_.status(FaceHandle(f)).deleted())
-        continue;
-      for (auto h : repaired_.fh_range(FaceHandle(f)))
-        edges.push_back(repaired_.edge_handle(h).idx());
+    const auto add_faces_within = [&](const Point& centre, double reach) {
+      for (int f : known_.repaired_scene->faces_within(centre, reach * (1.0 + 1e-9))) {
+        if (repaired_.status(FaceHandle(f)).deleted())
+          continue;
+        for (auto h : repaired_.fh_range(FaceHandle(f)))
+          edges.push_back(repaired_.edge_handle(h).idx());
+      }
+    };
+    if (polyline.size() == 1)
+      add_faces_within(polyline.front(), radius);
+    for (std::size_t i = 0; i + 1 < polyline.size(); ++i) {
+      const Point& a = polyline[i];
+      const Point& b = polyline[i + 1];
+      add_faces_within((a + b) * 0.5, 0.5 * (b - a).norm() + radius);
     }
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -224,7 +241,9 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
         const auto samples = sample_polyline(polyline, options.edge_sample_spacing);
         // Only sharp edges that can be within the search radius of the polyline.
         const GrowingBox box = polyline_box(polyline, options.edge_search_radius);
-        const NearestSegment near(from_input ? from_input->meeting(box) : whole->meeting(box));
+        const NearestSegment near(
+            from_input ? from_input->meeting(box, polyline, options.edge_search_radius)
+                       : whole->meeting(box));
         std::size_t covered = 0;
         bool all_near = !samples.empty();
         double farthest = 0.0;
@@ -248,7 +267,9 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
   }
 
   double area_sum = 0.0, weighted = 0.0, largest = 0.0;
-  for (int index : new_face_indices(repaired)) {
+  const std::vector<int> found_new_faces =
+      shortcuts.new_faces ? std::vector<int>() : new_face_indices(repaired);
+  for (int index : shortcuts.new_faces ? *shortcuts.new_faces : found_new_faces) {
     const FaceHandle f(index);
     const double area = face_area(repaired, f);
     if (!(area > 0.0))

@@ -74,6 +74,9 @@ struct FeatureRecoveryShortcuts {
   const std::vector<int>* input_face_regions = nullptr;
   const KeptFaces* kept = nullptr;
   const embree::TriangleScene* repaired_scene = nullptr;
+  /// new_face_indices(repaired) (face_subset.h), where the caller has them: the faces whose
+  /// normal deviation is measured, without a pass over every face to find them again.
+  const std::vector<int>* new_faces = nullptr;
 };
 
 /// Feature recovery of `repaired` against the ground truth of `c`; `complete_scene` is an

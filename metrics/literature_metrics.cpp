@@ -128,26 +128,72 @@ SampledFaces sampled_faces(const std::vector<double>& face_areas,
   return tally;
 }
 
+int SampledFaces::face(std::size_t i) const {
+  const std::size_t earlier = before ? before->size() : 0;
+  return i < earlier ? before->face(i) : faces[i - earlier];
+}
+
+double SampledFaces::running_sum(std::size_t i) const {
+  const std::size_t earlier = before ? before->size() : 0;
+  return i < earlier ? before->running_sum(i) : cumulative[i - earlier];
+}
+
+SampledFaces continued_tally(const SampledFaces& before) {
+  SampledFaces tally;
+  tally.area = before.area;
+  tally.shared_area = before.shared_area;
+  tally.unshared_area = before.unshared_area;
+  tally.before = &before;
+  return tally;
+}
+
 namespace {
 
-// `count` points spread by area over `faces` (with the running sum of their areas):
-// systematic sampling, point k at cumulative area (k + 1/2) / count of the total.
-AreaSamples samples_on(const Mesh& a, std::size_t count, const std::vector<int>& faces,
-                       const std::vector<double>& cumulative) {
+// The first position from `from` on whose running sum reaches `at`, or the last position
+// (`size` - 1) where none does: the step a walk from `from` would stop at, found by doubling
+// the stride and then halving it (the sums do not decrease), so that a sample costs the
+// logarithm of the faces it passes, not their number.
+template <class Sum>
+std::size_t first_reaching(const Sum& sum, std::size_t size, std::size_t from, double at) {
+  const std::size_t last = size - 1;
+  if (from >= last || !(sum(from) < at))
+    return from;
+  // sum(low) < at throughout; high is last or a position whose sum reaches at.
+  std::size_t low = from, stride = 1;
+  while (low + stride < last && sum(low + stride) < at) {
+    low += stride;
+    stride *= 2;
+  }
+  std::size_t high = std::min(low + stride, last);
+  while (high - low > 1) {
+    const std::size_t middle = low + (high - low) / 2;
+    if (sum(middle) < at)
+      low = middle;
+    else
+      high = middle;
+  }
+  return high;
+}
+
+// `count` points spread by area over the tally's faces (with the running sum of their
+// areas): systematic sampling, point k at cumulative area (k + 1/2) / count of the total.
+AreaSamples samples_on(const Mesh& a, std::size_t count, const SampledFaces& tally) {
   AreaSamples samples;
-  if (faces.empty() || count == 0)
+  const std::size_t size = tally.size();
+  if (size == 0 || count == 0)
     return samples;
-  const double total = cumulative.back();
+  const auto sum = [&tally](std::size_t i) { return tally.running_sum(i); };
+  const double total = sum(size - 1);
   samples.points.reserve(count);
-  std::size_t face = 0;
+  std::size_t position = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const double at = (static_cast<double>(k) + 0.5) / static_cast<double>(count) * total;
-    while (face + 1 < faces.size() && cumulative[face] < at)
-      ++face;
-    const auto corners = face_corners(a, a.face_handle(faces[face]));
+    position = first_reaching(sum, size, position, at);
+    const int face = tally.face(position);
+    const auto corners = face_corners(a, a.face_handle(face));
     const auto [u, v] = r2_point(k);
     samples.points.push_back(in_triangle(corners[0], corners[1], corners[2], u, v));
-    samples.faces.push_back(faces[face]);
+    samples.faces.push_back(face);
     samples.normals.push_back(triangle_unit_normal(corners[0], corners[1], corners[2]));
   }
   return samples;
@@ -157,23 +203,22 @@ AreaSamples samples_on(const Mesh& a, std::size_t count, const std::vector<int>&
 
 AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
   const std::vector<double> areas = face_areas(a);
-  std::vector<int> faces;
-  std::vector<double> cumulative;
+  SampledFaces faces;
   double total = 0.0;
   for (std::size_t f = 0; f < areas.size(); ++f) {
     if ((skip && (*skip)[f]) || !(areas[f] > 0.0))
       continue;
     total += areas[f];
-    faces.push_back(static_cast<int>(f));
-    cumulative.push_back(total);
+    faces.faces.push_back(static_cast<int>(f));
+    faces.cumulative.push_back(total);
   }
-  return samples_on(a, count, faces, cumulative);
+  return samples_on(a, count, faces);
 }
 
 AreaSamples tally_samples(const Mesh& a, std::size_t count, const SampledFaces& tally) {
   if (!(tally.area > 0.0) || !(tally.area - tally.shared_area > 0.0))
     return {};
-  return samples_on(a, count, tally.faces, tally.cumulative);
+  return samples_on(a, count, tally);
 }
 
 namespace {

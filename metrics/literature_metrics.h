@@ -82,13 +82,27 @@ struct SampledAnswers {
 /// A's faces as the sampled metrics take them: A's area and the area of its faces on B
 /// (each summed over the faces with area in index order), and the other faces with area, in
 /// index order, with the running sum of their areas (the samples are drawn from them).
+/// A tally may continue another (`before`, see continued_tally()): its faces and running
+/// sums then come after those of `before`, and its three sums include them.
 struct SampledFaces {
   double area = 0.0;
   double shared_area = 0.0;
   double unshared_area = 0.0;
   std::vector<int> faces;
   std::vector<double> cumulative;
+  const SampledFaces* before = nullptr;  ///< not owned; it must outlive this tally
+
+  /// The faces of `before` and its own, in order.
+  std::size_t size() const { return (before ? before->size() : 0) + faces.size(); }
+  int face(std::size_t i) const;
+  double running_sum(std::size_t i) const;
 };
+
+/// An empty continuation of `before`: its sums, no faces of its own yet. tally_faces() over
+/// the faces after `before`'s then gives the tally over all of them, sum for sum, without a
+/// copy of `before`'s faces (a repair that appends a patch to the input: the case's tally
+/// of the input, continued over the patch).
+SampledFaces continued_tally(const SampledFaces& before);
 
 /// The tally of A's faces from their areas (face_areas(a)) and `b_face_of_a` (optional: by
 /// face of A, the same face in B or -1).

@@ -133,7 +133,8 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
 
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
                   const InputSelfIntersections* known_input, const KeptFaces* kept_of_input,
-                  const InputTopology* topology, const embree::TriangleScene* repaired_scene) {
+                  const InputTopology* topology, const embree::TriangleScene* repaired_scene,
+                  const std::vector<int>* new_faces) {
   Validity result;
   std::optional<TopologyCounts> counts;
   if (topology && kept_of_input)
@@ -169,7 +170,9 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
     result.patch_self_intersections = pairs.patch_pairs;
   }
 
-  for (int index : new_face_indices(repaired)) {
+  const std::vector<int> found_new_faces =
+      new_faces ? std::vector<int>() : new_face_indices(repaired);
+  for (int index : new_faces ? *new_faces : found_new_faces) {
     const FaceHandle f(index);
     const auto t = face_corners(repaired, f);
     if (face_area(repaired, f) <= options.degenerate_area ||

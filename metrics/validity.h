@@ -80,10 +80,13 @@ InputSelfIntersections input_self_intersections(const Mesh& input);
 /// repair's changes (input_topology.h): the same counts.
 /// `repaired_scene` (optional, with `known_input` and `kept_of_input`): the repaired mesh's
 /// scene, which finds the kept faces near the others without a pass over every face.
+/// `new_faces` (optional): new_face_indices(repaired) (face_subset.h), where the caller has
+/// them: no pass over every face to find them again.
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {},
                   const InputSelfIntersections* known_input = nullptr,
                   const KeptFaces* kept_of_input = nullptr, const InputTopology* topology = nullptr,
-                  const embree::TriangleScene* repaired_scene = nullptr);
+                  const embree::TriangleScene* repaired_scene = nullptr,
+                  const std::vector<int>* new_faces = nullptr);
 
 /// The self-intersections of `repaired` from the input's own pairs. The faces of `repaired`
 /// that are the input's (kept_faces.h; a rotated face is not kept, only tested again): two

@@ -401,6 +401,25 @@ TEST(LiteratureMetrics, ATallyContinuedEqualsTheWholeTally) {
       EXPECT_EQ(tally.unshared_area, whole.unshared_area);
       EXPECT_EQ(tally.faces, whole.faces);
       EXPECT_EQ(tally.cumulative, whole.cumulative);
+      // The same continued from the tally before `first` without copying it
+      // (continued_tally): the same faces, sums and samples.
+      const SampledFaces before = sampled_faces(
+          std::vector<double>(areas.begin(), areas.begin() + first), &shared.b_face_of_a);
+      SampledFaces continued = continued_tally(before);
+      tally_faces(std::vector<double>(areas.begin() + first, areas.end()), &shared.b_face_of_a,
+                  first, continued);
+      EXPECT_EQ(continued.area, whole.area);
+      EXPECT_EQ(continued.shared_area, whole.shared_area);
+      EXPECT_EQ(continued.unshared_area, whole.unshared_area);
+      ASSERT_EQ(continued.size(), whole.faces.size());
+      for (std::size_t i = 0; i < whole.faces.size(); ++i) {
+        ASSERT_EQ(continued.face(i), whole.faces[i]) << i;
+        ASSERT_EQ(continued.running_sum(i), whole.cumulative[i]) << i;
+      }
+      const AreaSamples from_whole = tally_samples(pair.a, 500, whole);
+      const AreaSamples from_continued = tally_samples(pair.a, 500, continued);
+      EXPECT_EQ(from_continued.points, from_whole.points);
+      EXPECT_EQ(from_continued.faces, from_whole.faces);
     }
     const embree::TriangleScene b_scene(pair.b);
     SampledAgreementOptions options;
@@ -412,6 +431,51 @@ TEST(LiteratureMetrics, ATallyContinuedEqualsTheWholeTally) {
     EXPECT_EQ(alone.abs_cosine_mean, given.abs_cosine_mean);
     EXPECT_EQ(alone.area, given.area);
     EXPECT_EQ(alone.sampled_area, given.sampled_area);
+  }
+}
+
+// Each sample lies on the face a walk along the running sums finds (the first face from the
+// previous sample's on whose sum reaches the sample's share of the total, or the last face):
+// runs of equal sums, a few faces holding most of the area, more samples than faces and fewer,
+// and shares that fall exactly on a sum.
+TEST(LiteratureMetrics, ASampleLiesOnTheFaceAWalkAlongTheSumsFinds) {
+  const Mesh mesh = build_mesh(test::grid_soup(40));  // 3200 faces: any index below
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    SCOPED_TRACE(trial);
+    // Trials 0 and 1: 2048 unit areas (every other one 1e-30 in trial 1, which leaves the sum
+    // as it was) and 1024 or 512 samples: every share (k + 1/2) / count of the total is then
+    // exactly an integer, a running sum. The others: random.
+    const bool exact = trial < 2;
+    const std::size_t faces = exact ? 2048 * (1 + trial) : 1 + random() % 3000;
+    SampledFaces tally;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < faces; ++i) {
+      const double draw = unit(random);
+      // Mostly tiny areas (sums that stay equal in double precision: 1e-30 of 1), some large.
+      const double area = exact         ? (trial == 1 && i % 2 == 1 ? 1e-30 : 1.0)
+                          : draw < 0.5  ? 1e-30
+                          : draw < 0.95 ? draw
+                                        : 1e3 * draw;
+      sum += area;
+      tally.faces.push_back(static_cast<int>(i));
+      tally.cumulative.push_back(sum);
+    }
+    tally.area = tally.unshared_area = sum;
+    const std::size_t count = exact ? 1024 / (1 + trial) : 1 + random() % 5000;
+    const AreaSamples samples = tally_samples(mesh, count, tally);
+    ASSERT_EQ(samples.faces.size(), count);
+    std::size_t face = 0, exact_hits = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const double at = (static_cast<double>(k) + 0.5) / static_cast<double>(count) * sum;
+      while (face + 1 < faces && tally.cumulative[face] < at)
+        ++face;
+      exact_hits += tally.cumulative[face] == at ? 1 : 0;
+      ASSERT_EQ(samples.faces[k], static_cast<int>(face)) << k;
+    }
+    if (exact)
+      EXPECT_EQ(exact_hits, count);  // the construction does what it says
   }
 }
 
