@@ -110,11 +110,11 @@ class SharpEdgesFromInput {
     }
   }
 
-  // The sharp edges that meet `box` (the polyline's, grown by `radius`) among those within
-  // `radius` of the polyline, and perhaps others: what WholeMeshSharpEdges::meeting() gives,
-  // less edges farther than `radius` from every point of the polyline, which no sample
-  // weighs (a nearest distance past the search radius counts as none). The faces are found
-  // about each of the polyline's segments (a ball about its midpoint holding the segment
+  // The sharp edges that meet `box` among those within `radius` of the polyline, and perhaps
+  // others: what WholeMeshSharpEdges::meeting() gives, less edges farther than `radius` from
+  // every point of the polyline, which no sample weighs where `radius` is the larger of the
+  // search radius and the tolerance (a nearest distance past both counts as none). The faces are
+  // found about each of the polyline's segments (a ball about its midpoint holding the segment
   // grown by `radius`: a face with a point within `radius` of the segment), not in the
   // box's enclosing ball, which on a long diagonal edge holds much more of the model.
   std::vector<SegmentEnds> meeting(const GrowingBox& box, const std::vector<Point>& polyline,
@@ -241,9 +241,10 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
         const auto samples = sample_polyline(polyline, options.edge_sample_spacing);
         // Only sharp edges that can be within the search radius of the polyline.
         const GrowingBox box = polyline_box(polyline, options.edge_search_radius);
-        const NearestSegment near(
-            from_input ? from_input->meeting(box, polyline, options.edge_search_radius)
-                       : whole->meeting(box));
+        // A sample weighs its nearest sharp edge only within the tolerance or the radius.
+        const double reach = std::max(options.edge_search_radius, options.edge_tolerance);
+        const NearestSegment near(from_input ? from_input->meeting(box, polyline, reach)
+                                             : whole->meeting(box));
         std::size_t covered = 0;
         bool all_near = !samples.empty();
         double farthest = 0.0;

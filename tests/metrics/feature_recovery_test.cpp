@@ -4,13 +4,18 @@
 #include "metrics/feature_recovery.h"
 
 #include "core/geometry.h"
+#include "core/region_segmentation.h"
 #include "generators/case_catalog.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/kept_faces.h"
+#include "tests/metrics/test_repairs.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace holebench {
 namespace {
@@ -96,6 +101,49 @@ TEST(FeatureRecovery, AMovedModelIsChargedItsOffset) {
       ASSERT_TRUE(e.distance.has_value());
       EXPECT_GE(*e.distance, d * std::sqrt(2.0 / 3.0) * (1.0 - 1e-9));
       EXPECT_LE(*e.distance, d * (1.0 + 1e-9));
+    }
+  }
+}
+
+// With what a case knows of the input (FeatureRecoveryShortcuts: the input's regions, the kept
+// faces, a scene of the repair), the sharp edges near each missing edge are looked for about
+// the edge's segments, not over the whole repaired mesh's analysis; the recovery is the same,
+// field for field, whatever the tolerance and the search radius (a tolerance past the radius
+// included).
+TEST(FeatureRecovery, TheInputsShortcutsGiveTheWholeMeshsRecovery) {
+  for (const char* id :
+       {"box/corner", "brep/k3/inner/convex-convex-convex/small",
+        "brep/k2/outer/reflex/inner-inner/large", "solid/l_block/edge_convex/small"}) {
+    SCOPED_TRACE(id);
+    const Case c = generators::make_case(id);
+    const Mesh repaired = test::fan_closing(c.input);
+    const embree::TriangleScene complete_scene(c.complete);
+    const embree::TriangleScene repaired_scene(repaired);
+    const KeptFaces kept = kept_faces(c.input, repaired);
+    ASSERT_TRUE(kept.every_input_face_kept());
+    const double diagonal = bounding_box_diagonal(c.complete);
+    for (const auto& [tolerance, radius] : std::vector<std::pair<double, double>>{
+             {5e-3, 5e-2}, {5e-2, 5e-3}, {2e-2, 2e-2}, {1e-3, 0.5}, {0.3, 1e-3}}) {
+      SCOPED_TRACE(testing::Message() << "tolerance " << tolerance << ", radius " << radius);
+      FeatureRecoveryOptions options = options_for(c);
+      options.edge_tolerance = tolerance * diagonal;
+      options.edge_search_radius = radius * diagonal;
+      const std::vector<int> regions =
+          segment_regions(c.input, options.features.segmentation).face_region;
+      FeatureRecoveryShortcuts shortcuts;
+      shortcuts.input_face_regions = &regions;
+      shortcuts.kept = &kept;
+      shortcuts.repaired_scene = &repaired_scene;
+      const FeatureRecovery whole = feature_recovery(c, repaired, complete_scene, options);
+      const FeatureRecovery from_input =
+          feature_recovery(c, repaired, complete_scene, options, shortcuts);
+      ASSERT_FALSE(whole.edges.empty());
+      ASSERT_EQ(from_input.edges.size(), whole.edges.size());
+      for (std::size_t i = 0; i < whole.edges.size(); ++i) {
+        EXPECT_EQ(from_input.edges[i].covered_fraction, whole.edges[i].covered_fraction) << i;
+        EXPECT_EQ(from_input.edges[i].present, whole.edges[i].present) << i;
+        EXPECT_EQ(from_input.edges[i].distance, whole.edges[i].distance) << i;
+      }
     }
   }
 }
