@@ -318,7 +318,10 @@ void add_agreement(Recorder& out, const char* f_small, const char* f_large, cons
 struct KnownSampledFaces {
   std::optional<SampledFaces> repaired;
   std::optional<SampledFaces> complete_made;
-  const SampledFaces* complete = nullptr;
+  const SampledFaces* complete_known = nullptr;  // the case's, where no new face changes it
+  // The complete model's tally: made here or the case's (a pointer into this struct is
+  // taken only here, so that a copy of it never points into the one it was copied from).
+  const SampledFaces* complete() const { return complete_made ? &*complete_made : complete_known; }
 };
 KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
                                       const SharedFaces& shared, const CaseEvaluation* known,
@@ -340,9 +343,8 @@ KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
   tally_faces(new_areas, &shared.b_face_of_a, first, *tallies.repaired);
   if (new_face_on_complete) {
     tallies.complete_made = sampled_faces(known->complete_face_areas(), &shared.a_face_of_b);
-    tallies.complete = &*tallies.complete_made;
   } else {
-    tallies.complete = known->complete_sampled_faces();
+    tallies.complete_known = known->complete_sampled_faces();
   }
   return tallies;
 }
@@ -381,7 +383,7 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   const SampledAnswers* complete_answers = &truth_answers;
   SampledAnswers with_patch;
   const InputConeAnswers* input_cones = known ? known->complete_cone_answers() : nullptr;
-  if (input_cones && tallies.complete == known->complete_sampled_faces() &&
+  if (input_cones && tallies.complete() == known->complete_sampled_faces() &&
       repaired_scene.base_part() == &input_cones->input_scene() &&
       truth_answers.points != input_cones->points()) {
     with_patch = input_cones->with_patch(repaired_scene.added_part());
@@ -392,7 +394,7 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
       sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
                         &patch_answers, nullptr, tallies.repaired ? &*tallies.repaired : nullptr),
       sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, complete_answers,
-                        nullptr, tallies.complete));
+                        nullptr, tallies.complete()));
   if (hole) {
     add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,
                   kHoleNormalConsistencyFraction, hole->first, hole->second);
