@@ -203,16 +203,16 @@ AreaSamples samples_on(const Mesh& a, std::size_t count, const SampledFaces& tal
 
 AreaSamples area_samples(const Mesh& a, std::size_t count, const std::vector<bool>* skip) {
   const std::vector<double> areas = face_areas(a);
-  SampledFaces faces;
+  SampledFaces tally;  // only the faces and their running sums: what samples_on() reads
   double total = 0.0;
   for (std::size_t f = 0; f < areas.size(); ++f) {
     if ((skip && (*skip)[f]) || !(areas[f] > 0.0))
       continue;
     total += areas[f];
-    faces.faces.push_back(static_cast<int>(f));
-    faces.cumulative.push_back(total);
+    tally.faces.push_back(static_cast<int>(f));
+    tally.cumulative.push_back(total);
   }
-  return samples_on(a, count, faces);
+  return samples_on(a, count, tally);
 }
 
 AreaSamples tally_samples(const Mesh& a, std::size_t count, const SampledFaces& tally) {
