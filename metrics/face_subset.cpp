@@ -50,6 +50,14 @@ std::vector<int> new_face_indices(const Mesh& mesh) {
   return faces;
 }
 
+const std::vector<int>& new_face_indices(const Mesh& mesh, const std::vector<int>* known,
+                                         std::vector<int>& found) {
+  if (known)
+    return *known;
+  found = new_face_indices(mesh);
+  return found;
+}
+
 std::vector<int> new_vertex_indices(const Mesh& mesh) {
   std::vector<int> vertices;
   const std::size_t count = mesh.n_vertices();

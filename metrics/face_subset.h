@@ -16,6 +16,9 @@ Mesh face_subset(const Mesh& mesh, const std::vector<int>& faces);
 
 /// The indices of the faces of `mesh` marked `Provenance::New`, in index order.
 std::vector<int> new_face_indices(const Mesh& mesh);
+/// The same: `known` where the caller has them (not null), else found here into `found`.
+const std::vector<int>& new_face_indices(const Mesh& mesh, const std::vector<int>* known,
+                                         std::vector<int>& found);
 /// The indices of the vertices marked new (is_new), deleted ones left out, in index order.
 std::vector<int> new_vertex_indices(const Mesh& mesh);
 

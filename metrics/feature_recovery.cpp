@@ -268,9 +268,8 @@ FeatureRecovery feature_recovery(const Case& c, const Mesh& repaired,
   }
 
   double area_sum = 0.0, weighted = 0.0, largest = 0.0;
-  const std::vector<int> found_new_faces =
-      shortcuts.new_faces ? std::vector<int>() : new_face_indices(repaired);
-  for (int index : shortcuts.new_faces ? *shortcuts.new_faces : found_new_faces) {
+  std::vector<int> found_new_faces;
+  for (int index : new_face_indices(repaired, shortcuts.new_faces, found_new_faces)) {
     const FaceHandle f(index);
     const double area = face_area(repaired, f);
     if (!(area > 0.0))

@@ -170,9 +170,8 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
     result.patch_self_intersections = pairs.patch_pairs;
   }
 
-  const std::vector<int> found_new_faces =
-      new_faces ? std::vector<int>() : new_face_indices(repaired);
-  for (int index : new_faces ? *new_faces : found_new_faces) {
+  std::vector<int> found_new_faces;
+  for (int index : new_face_indices(repaired, new_faces, found_new_faces)) {
     const FaceHandle f(index);
     const auto t = face_corners(repaired, f);
     if (face_area(repaired, f) <= options.degenerate_area ||
