@@ -29,8 +29,12 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
     complete_sampled_faces_ = sampled_faces(complete_face_areas_, &input_shared.a_face_of_b);
     if (c.input.n_faces() > 0) {
       input_scene_ = std::make_unique<embree::TriangleScene>(c.input);
-      complete_cell_bounds_ = std::make_unique<MeanCellBounds>(
-          c.complete, *input_scene_, first_pass(c.complete, c.input, *input_scene_), mean);
+      // One first pass of the complete model against the input for both of its tables.
+      const FirstPass complete_pass = first_pass(c.complete, c.input, *input_scene_);
+      complete_cell_bounds_ =
+          std::make_unique<MeanCellBounds>(c.complete, *input_scene_, complete_pass, mean);
+      complete_hausdorff_bounds_ =
+          std::make_unique<HausdorffCellBounds>(c.complete, *input_scene_, complete_pass);
       if (options.literature_metrics) {
         NormalConeOptions cone;
         cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;

@@ -29,12 +29,12 @@ class CaseEvaluation {
   /// searches (surface_distance.h, MeanCellBounds): of the input's faces against the
   /// complete model (the faces a repair keeps need none of their own) and of the complete
   /// model's faces against the input (a repair is the input away from its new faces); the
-  /// first bounds of the Hausdorff search of the input's faces against the complete model
-  /// (hausdorff_distance.h, HausdorffCellBounds); where the searches of a repair that appends
-  /// to the input start (appended_repair_starts.h) and the faces' areas; where `options` test
-  /// self-intersections, the input's own intersecting pairs (validity.h); and the input's topology,
-  /// loop centroids and nearest vertices to the missing corners, so that each job's validity, hole
-  /// matching and corner errors look at its changes only.
+  /// same two tables for the Hausdorff searches (hausdorff_distance.h, HausdorffCellBounds);
+  /// where the searches of a repair that appends to the input start
+  /// (appended_repair_starts.h) and the faces' areas; where `options` test
+  /// self-intersections, the input's own intersecting pairs (validity.h); and the input's
+  /// topology, loop centroids and nearest vertices to the missing corners, so that each job's
+  /// validity, hole matching and corner errors look at its changes only.
   CaseEvaluation(const Case& c, const EvaluationOptions& options);
   ~CaseEvaluation();
   CaseEvaluation(const CaseEvaluation&) = delete;
@@ -76,6 +76,10 @@ class CaseEvaluation {
   const HausdorffCellBounds* input_hausdorff_bounds() const {
     return input_hausdorff_bounds_.get();
   }
+  /// The complete model's faces' first Hausdorff bounds against the input, or nullptr.
+  const HausdorffCellBounds* complete_hausdorff_bounds() const {
+    return complete_hausdorff_bounds_.get();
+  }
   /// The input's own intersecting pairs, or nullptr where they were not computed.
   const InputSelfIntersections* input_self_intersections() const {
     return input_self_intersections_ ? &*input_self_intersections_ : nullptr;
@@ -98,6 +102,7 @@ class CaseEvaluation {
   std::unique_ptr<MeanCellBounds> input_cell_bounds_;
   std::unique_ptr<MeanCellBounds> complete_cell_bounds_;
   std::unique_ptr<HausdorffCellBounds> input_hausdorff_bounds_;
+  std::unique_ptr<HausdorffCellBounds> complete_hausdorff_bounds_;
   std::unique_ptr<AppendedRepairStarts> appended_repair_starts_;
   std::optional<SampledFaces> input_sampled_faces_;
   std::optional<SampledFaces> complete_sampled_faces_;

@@ -114,6 +114,7 @@ SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
   first.repaired_to_complete.hausdorff = shared->input_hausdorff_bounds();
   if (kept && kept->order_kept) {
     first.complete_to_repaired.bounds = shared->complete_cell_bounds();
+    first.complete_to_repaired.hausdorff = shared->complete_hausdorff_bounds();
     first.complete_to_repaired.change.b0_face_of_b = &kept->input_face_of_repaired;
     first.complete_to_repaired.change.b_face_of_b0 = &kept->repaired_face_of_input;
     first.complete_to_repaired.change.changed = changed_faces_box(c.input, result.repaired, *kept);

@@ -3,6 +3,7 @@
 #include "core/distances.h"
 #include "metrics/cell_queue.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/growing_box.h"
 #include "metrics/shared_faces.h"
 #include "metrics/triangle_cell.h"
 #include "metrics/triangle_geometry.h"
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -33,10 +35,45 @@ struct BoundSteps {
   double centroid_triangle = 0.0;
 };
 
+// A cell's recorded steps and the box of the ball of B0 its centroid's query read.
+struct RecordedCell {
+  BoundSteps steps;
+  GrowingBox reach;
+};
+
+// The cell with its corners' nearest faces of B read as B0's (`b0_face_of_b`), or nullopt
+// where one of them is not a face of B0.
+std::optional<TriangleCell> as_cell_of_b0(const TriangleCell& cell,
+                                          const std::vector<int>& b0_face_of_b) {
+  TriangleCell as_b0 = cell;
+  for (int& face : as_b0.corner_face) {
+    if (face < 0 || static_cast<std::size_t>(face) >= b0_face_of_b.size() || b0_face_of_b[face] < 0)
+      return std::nullopt;
+    face = b0_face_of_b[face];
+  }
+  return as_b0;
+}
+
 }  // namespace
 
 struct HausdorffCellBounds::Table {
-  std::unordered_map<CellKey, BoundSteps, CellKeyHash> cells;
+  std::unordered_map<CellKey, RecordedCell, CellKeyHash> cells;
+
+  // The recorded steps of `cell` of a search against B (`change`: how B differs from B0;
+  // null: B is B0), or null where they are not the cell's against B.
+  const BoundSteps* find(const TriangleCell& cell, const SurfaceChange* change) const {
+    if (!change || !change->b0_face_of_b) {
+      const auto it = cells.find(key_of(cell));
+      return it == cells.end() ? nullptr : &it->second.steps;
+    }
+    const std::optional<TriangleCell> as_b0 = as_cell_of_b0(cell, *change->b0_face_of_b);
+    if (!as_b0)
+      return nullptr;
+    const auto it = cells.find(key_of(*as_b0));
+    if (it == cells.end() || it->second.reach.meets(change->changed))
+      return nullptr;
+    return &it->second.steps;
+  }
 };
 
 namespace {
@@ -47,7 +84,7 @@ class DirectedSearch {
       : scene_(scene), options_(options) {}
 
   DirectedHausdorff run(const Mesh& a, const KnownDistances& known,
-                        const HausdorffCellBounds* first) {
+                        const HausdorffCellBounds* first, const SurfaceChange* change) {
     // Corner distances of the original triangles are shared through the vertices.
     VertexDistances computed;
     const VertexDistances& vertices = vertex_distances(a, scene_, known, computed);
@@ -71,23 +108,26 @@ class DirectedSearch {
     // the same result, whatever the number of threads).
     std::vector<Bound> bounds(initial.size());
     const double settled_now = settled();  // from the vertices: only grows afterwards
-    // A cell that `first` holds (the same cell against the same B) replays its recorded
-    // steps: the same bound as bound_of() gives, without its queries.
+    // A cell that `first` holds (the same cell against the same B, or against a B0 that B
+    // equals where the cell's steps read it) replays its recorded steps: the same bound as
+    // bound_of() gives, without its queries.
     const HausdorffCellBounds::Table* table = first ? &first->table() : nullptr;
+    std::vector<char> taken(initial.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
                       [&](const auto& range) {
                         for (std::size_t i = range.begin(); i != range.end(); ++i) {
                           if (table) {
-                            const auto it = table->cells.find(key_of(initial[i]));
-                            if (it != table->cells.end()) {
-                              RecordedSteps steps{it->second};
+                            if (const BoundSteps* recorded = table->find(initial[i], change)) {
+                              RecordedSteps steps{*recorded};
                               bounds[i] = bound_by_steps(initial[i], settled_now, steps);
+                              taken[i] = 1;
                               continue;
                             }
                           }
                           bounds[i] = bound_of(initial[i], settled_now);
                         }
                       });
+    result_.cells_taken = static_cast<std::size_t>(std::count(taken.begin(), taken.end(), char{1}));
     // Queued all at once, in face order; the settled ones only leave their bound.
     for (std::size_t i = 0; i < initial.size(); ++i)
       prepare(initial[i], bounds[i]);
@@ -343,15 +383,16 @@ class DirectedSearch {
 
 DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
                                      const HausdorffOptions& options, const KnownDistances& known,
-                                     const HausdorffCellBounds* first) {
-  return DirectedSearch(b_scene, options).run(a, known, first);
+                                     const HausdorffCellBounds* first,
+                                     const SurfaceChange* change) {
+  return DirectedSearch(b_scene, options).run(a, known, first, change);
 }
 
-HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleScene& b_scene,
+HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleScene& b0_scene,
                                          const FirstPass& first_pass)
     : table_(std::make_unique<Table>()) {
   // The cells as the search makes them: the same first pass over the vertices, the faces
-  // lying on B left out (the search skips them).
+  // lying on B0 left out (the search skips them).
   std::vector<TriangleCell> cells;
   cells.reserve(a0.n_faces());
   for (auto f : a0.faces()) {
@@ -359,15 +400,31 @@ HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleS
       cells.push_back(face_cell(a0, f, first_pass.vertices));
   }
   const HausdorffOptions options;  // the steps do not depend on the error bound
-  const DirectedSearch search(b_scene, options);
-  std::vector<BoundSteps> steps(cells.size());
+  const DirectedSearch search(b0_scene, options);
+  std::vector<RecordedCell> recorded(cells.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i)
-      steps[i] = search.all_steps(cells[i]);
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      recorded[i].steps = search.all_steps(cells[i]);
+      // The centroid's query read the faces of B0 within its distance (as
+      // LiveSteps::centroid_distance() places it), padded by 1e-9 of its scale so that a
+      // face of B at that distance, up to rounding, meets the ball's box.
+      const auto& c = cells[i].corners;
+      const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+      const double d = recorded[i].steps.centroid_distance;
+      const double radius =
+          d + 1e-9 * (d + std::abs(centroid[0]) + std::abs(centroid[1]) + std::abs(centroid[2]));
+      if (std::isfinite(radius)) {
+        recorded[i].reach.add_ball(centroid, radius);
+      } else {  // no answer within reach, or no finite point: it read all of B0
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        recorded[i].reach.lo = Point(-kInf, -kInf, -kInf);
+        recorded[i].reach.hi = Point(kInf, kInf, kInf);
+      }
+    }
   });
   table_->cells.reserve(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i)
-    table_->cells.emplace(key_of(cells[i]), steps[i]);
+    table_->cells.emplace(key_of(cells[i]), recorded[i]);
 }
 
 HausdorffCellBounds::~HausdorffCellBounds() = default;

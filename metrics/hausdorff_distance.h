@@ -24,6 +24,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "metrics/surface_change.h"
 #include "metrics/vertex_distances.h"
 
 #include <cstddef>
@@ -46,6 +47,9 @@ struct DirectedHausdorff {
   double lower = 0.0;  ///< a distance attained at a point of A
   double upper = 0.0;  ///< no point of A is farther from B than this
   std::size_t queries = 0;
+  /// First cells whose bounds were taken from a HausdorffCellBounds (their queries are
+  /// counted in `queries` all the same).
+  std::size_t cells_taken = 0;
   bool converged = true;
 };
 
@@ -62,28 +66,36 @@ class HausdorffCellBounds;
 /// h(A, B) with `b_scene` an Embree scene of B (reuse it across calls; it may hold only the
 /// faces of B that points of A's unshared faces can be closest to) and, optionally, what is
 /// known already: A's vertex distances and the faces A shares with B (vertex_distances.h),
-/// and the first bounds of another mesh's faces against the same B (`first`: taken for
-/// A's faces with the same cells).
+/// and the first bounds of another mesh's faces against B or a B0 (`first`: taken for A's
+/// faces with the same cells). `change` (optional; null: B is the B0 of `first`): how B
+/// differs from B0; a cell's bounds are then taken where its corners' nearest faces are B0's
+/// and what its steps read of B0 lies outside `change->changed`.
 DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene& b_scene,
                                      const HausdorffOptions& options = {},
                                      const KnownDistances& known = {},
-                                     const HausdorffCellBounds* first = nullptr);
+                                     const HausdorffCellBounds* first = nullptr,
+                                     const SurfaceChange* change = nullptr);
 
-/// The Hausdorff search's first bounds of the faces of a mesh A0 against a surface B: each
-/// face's cell (its corners in the face's order, their distances to B and nearest faces of
-/// B, as the first pass over A0's vertices gives them) with every step of its upper bound
-/// (i)-(iii) and its centroid's query, taken whether or not the search would need them. A
-/// search of another mesh A against the same B (the same triangles in the same order) replays
-/// them for every face of A whose cell is the same, bit for bit: each step in the order and
-/// under the conditions the search takes it, so that the cell gets the same bound, counts the
-/// same query and the search gives the same result as without them. Built once per case
-/// (case_evaluation.h): the input's faces against the complete model, which a repair keeps
-/// for the most part, so that each job bounds only the faces it made or changed.
+/// The Hausdorff search's first bounds of the faces of a mesh A0 against a surface B0: each
+/// face's cell (its corners in the face's order, their distances to B0 and nearest faces of
+/// B0, as the first pass over A0's vertices gives them) with every step of its upper bound
+/// (i)-(iii) and its centroid's query, taken whether or not the search would need them, and
+/// the box of the ball of B0 its centroid's query read. A search of another mesh A against a
+/// B replays them for every face of A whose cell is the same, bit for bit, where B is B0
+/// (the same triangles in the same order) or differs from it only outside that box
+/// (SurfaceChange: the steps read B0's triangles at the corners' and the centroid's nearest
+/// faces, which B has too, and the centroid's query, which no face of B inside its ball
+/// changes): each step in the order and under the conditions the search takes it, so that
+/// the cell gets the same bound, counts the same query and the search gives the same result
+/// as without them. Built once per case (case_evaluation.h): the input's faces against the
+/// complete model, which a repair keeps for the most part, so that each job bounds only the
+/// faces it made or changed; and the complete model's faces against the input, which a
+/// repair is away from its patch.
 class HausdorffCellBounds {
  public:
-  /// `first_pass`: A0's against B (vertex_distances.h; the faces A0 shares with B need no
+  /// `first_pass`: A0's against B0 (vertex_distances.h; the faces A0 shares with B0 need no
   /// bounds).
-  HausdorffCellBounds(const Mesh& a0, const embree::TriangleScene& b_scene,
+  HausdorffCellBounds(const Mesh& a0, const embree::TriangleScene& b0_scene,
                       const FirstPass& first_pass);
   ~HausdorffCellBounds();
   HausdorffCellBounds(const HausdorffCellBounds&) = delete;

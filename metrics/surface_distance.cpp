@@ -15,9 +15,13 @@ void settle(DistanceInterval& d) {
   d.value = std::clamp(d.value, d.lower, d.upper);
 }
 
-// The Hausdorff search's first bounds that `first` holds, where its B is the search's.
+// The Hausdorff search's first bounds that `first` holds, and how the search's B differs
+// from theirs.
 const HausdorffCellBounds* hausdorff_first(const FirstBounds* first) {
-  return first && !first->change.b0_face_of_b ? first->hausdorff : nullptr;
+  return first ? first->hausdorff : nullptr;
+}
+const SurfaceChange* change_of(const FirstBounds* first) {
+  return first ? &first->change : nullptr;
 }
 
 }  // namespace
@@ -74,9 +78,11 @@ SurfaceDistance surface_distance(const Mesh& a, const embree::TriangleScene& a_s
                                b_start ? b_start->area : 0.0};
   SurfaceDistance result;
   result.hausdorff.a_to_b =
-      directed_hausdorff(a, b_scene, options.hausdorff, a_known, hausdorff_first(a_first_bounds));
+      directed_hausdorff(a, b_scene, options.hausdorff, a_known, hausdorff_first(a_first_bounds),
+                         change_of(a_first_bounds));
   result.hausdorff.b_to_a =
-      directed_hausdorff(b, a_scene, options.hausdorff, b_known, hausdorff_first(b_first_bounds));
+      directed_hausdorff(b, a_scene, options.hausdorff, b_known, hausdorff_first(b_first_bounds),
+                         change_of(b_first_bounds));
   result.a_to_b = directed_mean_distance(a, b_scene, options.mean, a_known, a_first_bounds);
   result.b_to_a = directed_mean_distance(b, a_scene, options.mean, b_known, b_first_bounds);
   // The shared first pass counts once, with the Hausdorff search.

@@ -39,6 +39,7 @@
 #include "metrics/growing_box.h"
 #include "metrics/hausdorff_distance.h"
 #include "metrics/shared_faces.h"
+#include "metrics/surface_change.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -91,27 +92,14 @@ struct DirectedMeanDistance {
 class MeanCellBounds;
 class MeanSearchSteps;
 
-/// How the B of a search differs from the B0 that a MeanCellBounds was built against.
-struct SurfaceChange {
-  /// By face of B, the face of B0 with the same triangle, or -1; nullptr: B is B0. Faces of
-  /// both must be in the same order (a later face of B0 is a later face of B), so that ties
-  /// between equally near faces, broken by the smaller index, break the same way.
-  const std::vector<int>* b0_face_of_b = nullptr;
-  /// The other way: by face of B0, the face of B with the same triangle, or -1 (set with
-  /// b0_face_of_b; without it, answers against B0 are not taken for B).
-  const std::vector<int>* b_face_of_b0 = nullptr;
-  /// A box holding every face of B that B0 does not have and every face of B0 that B does
-  /// not have.
-  GrowingBox changed;
-};
-
 /// Bounds already computed for the first pass of a mean search (MeanCellBounds) and of a
 /// Hausdorff search (HausdorffCellBounds), and how the search's B differs from theirs.
 struct FirstBounds {
   const MeanCellBounds* bounds = nullptr;
   SurfaceChange change;
-  /// Taken only where B is B0 (`change.b0_face_of_b` null): surface_distance()'s Hausdorff
-  /// search of A against B.
+  /// surface_distance()'s Hausdorff search of A against B takes them as the mean search
+  /// takes `bounds`: for A's faces with the same cells, where B is B0 within what their
+  /// steps read (`change`).
   const HausdorffCellBounds* hausdorff = nullptr;
   /// What another mean search against this same B recorded (MeanSearchSteps), taken by the
   /// mean search of A for the cells it shares with that search's.

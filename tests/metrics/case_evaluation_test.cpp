@@ -79,6 +79,8 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
       if (noise > 0.0) {  // no input face lies on the complete model: each has its bounds
         EXPECT_GT(shared.input_cell_bounds()->size(), c.input.n_faces() / 2);
         EXPECT_EQ(shared.input_hausdorff_bounds()->size(), c.input.n_faces());
+        ASSERT_NE(shared.complete_hausdorff_bounds(), nullptr);
+        EXPECT_EQ(shared.complete_hausdorff_bounds()->size(), c.complete.n_faces());
       }
       const std::string what = std::string(id) + " noise " + std::to_string(noise);
       MethodResult fan;

@@ -1,0 +1,27 @@
+// How the surface B of a search differs from the B0 that bounds computed once per case were
+// computed against (MeanCellBounds in surface_distance.h, HausdorffCellBounds in
+// hausdorff_distance.h): a repair is the input away from its new faces, so the complete
+// model's cells bounded against the input keep their bounds against the repair wherever what
+// the bounds read of the input lies away from the repair's changes.
+#pragma once
+
+#include "metrics/growing_box.h"
+
+#include <vector>
+
+namespace holebench {
+
+struct SurfaceChange {
+  /// By face of B, the face of B0 with the same triangle, or -1; nullptr: B is B0. Faces of
+  /// both must be in the same order (a later face of B0 is a later face of B), so that ties
+  /// between equally near faces, broken by the smaller index, break the same way.
+  const std::vector<int>* b0_face_of_b = nullptr;
+  /// The other way: by face of B0, the face of B with the same triangle, or -1 (set with
+  /// b0_face_of_b; without it, answers against B0 are not taken for B).
+  const std::vector<int>* b_face_of_b0 = nullptr;
+  /// A box holding every face of B that B0 does not have and every face of B0 that B does
+  /// not have.
+  GrowingBox changed;
+};
+
+}  // namespace holebench
