@@ -2,6 +2,7 @@
 
 #include "core/distances.h"
 #include "metrics/cell_queue.h"
+#include "metrics/cell_table.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/growing_box.h"
 #include "metrics/shared_faces.h"
@@ -18,7 +19,6 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 namespace holebench {
@@ -57,22 +57,23 @@ std::optional<TriangleCell> as_cell_of_b0(const TriangleCell& cell,
 }  // namespace
 
 struct HausdorffCellBounds::Table {
-  std::unordered_map<CellKey, RecordedCell, CellKeyHash> cells;
+  CellTable<RecordedCell> cells;
 
-  // The recorded steps of `cell` of a search against B (`change`: how B differs from B0;
-  // null: B is B0), or null where they are not the cell's against B.
-  const BoundSteps* find(const TriangleCell& cell, const SurfaceChange* change) const {
+  // The recorded steps of `cell`, of face `face` of A (tried as A0's face first), of a
+  // search against B (`change`: how B differs from B0; null: B is B0), or null where they
+  // are not the cell's against B.
+  const BoundSteps* find(const TriangleCell& cell, int face, const SurfaceChange* change) const {
     if (!change || !change->b0_face_of_b) {
-      const auto it = cells.find(key_of(cell));
-      return it == cells.end() ? nullptr : &it->second.steps;
+      const RecordedCell* recorded = cells.find(key_of(cell), face);
+      return recorded ? &recorded->steps : nullptr;
     }
     const std::optional<TriangleCell> as_b0 = as_cell_of_b0(cell, *change->b0_face_of_b);
     if (!as_b0)
       return nullptr;
-    const auto it = cells.find(key_of(*as_b0));
-    if (it == cells.end() || it->second.reach.meets(change->changed))
+    const RecordedCell* recorded = cells.find(key_of(*as_b0), face);
+    if (!recorded || recorded->reach.meets(change->changed))
       return nullptr;
-    return &it->second.steps;
+    return &recorded->steps;
   }
 };
 
@@ -92,16 +93,20 @@ class DirectedSearch {
     for (double d : vertices.distance)
       result_.lower = std::max(result_.lower, d);
     std::vector<TriangleCell> initial;
+    std::vector<int> initial_faces;  // the face of A of each first cell
     if (known.unshared_faces) {
       initial.reserve(known.unshared_faces->size());
+      initial_faces = *known.unshared_faces;
       for (int f : *known.unshared_faces)
         initial.push_back(face_cell(a, FaceHandle(f), vertices));
     } else {
       initial.reserve(a.n_faces());
+      initial_faces.reserve(a.n_faces());
       for (auto f : a.faces()) {
         if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
           continue;  // lies on B: distance zero everywhere
         initial.push_back(face_cell(a, f, vertices));
+        initial_faces.push_back(f.idx());
       }
     }
     // The first cells' queries in parallel, queued in face order (the same queue, and so
@@ -113,20 +118,20 @@ class DirectedSearch {
     // bound_of() gives, without its queries.
     const HausdorffCellBounds::Table* table = first ? &first->table() : nullptr;
     std::vector<char> taken(initial.size(), 0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, initial.size(), 256),
-                      [&](const auto& range) {
-                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                          if (table) {
-                            if (const BoundSteps* recorded = table->find(initial[i], change)) {
-                              RecordedSteps steps{*recorded};
-                              bounds[i] = bound_by_steps(initial[i], settled_now, steps);
-                              taken[i] = 1;
-                              continue;
-                            }
-                          }
-                          bounds[i] = bound_of(initial[i], settled_now);
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, initial.size(), 256), [&](const auto& range) {
+          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            if (table) {
+              if (const BoundSteps* recorded = table->find(initial[i], initial_faces[i], change)) {
+                RecordedSteps steps{*recorded};
+                bounds[i] = bound_by_steps(initial[i], settled_now, steps);
+                taken[i] = 1;
+                continue;
+              }
+            }
+            bounds[i] = bound_of(initial[i], settled_now);
+          }
+        });
     result_.cells_taken = static_cast<std::size_t>(std::count(taken.begin(), taken.end(), char{1}));
     // Queued all at once, in face order; the settled ones only leave their bound.
     for (std::size_t i = 0; i < initial.size(); ++i)
@@ -394,10 +399,14 @@ HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleS
   // The cells as the search makes them: the same first pass over the vertices, the faces
   // lying on B0 left out (the search skips them).
   std::vector<TriangleCell> cells;
+  std::vector<int> faces;
   cells.reserve(a0.n_faces());
+  faces.reserve(a0.n_faces());
   for (auto f : a0.faces()) {
-    if (first_pass.b_face_of_a[f.idx()] < 0)
+    if (first_pass.b_face_of_a[f.idx()] < 0) {
       cells.push_back(face_cell(a0, f, first_pass.vertices));
+      faces.push_back(f.idx());
+    }
   }
   const HausdorffOptions options;  // the steps do not depend on the error bound
   const DirectedSearch search(b0_scene, options);
@@ -424,7 +433,7 @@ HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleS
   });
   table_->cells.reserve(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i)
-    table_->cells.emplace(key_of(cells[i]), recorded[i]);
+    table_->cells.add(faces[i], key_of(cells[i]), recorded[i]);
 }
 
 HausdorffCellBounds::~HausdorffCellBounds() = default;

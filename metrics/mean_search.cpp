@@ -1,6 +1,7 @@
 #include "metrics/mean_search.h"
 
 #include "metrics/cell_queue.h"
+#include "metrics/cell_table.h"
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/mean_bounds.h"
 #include "metrics/triangle_cell.h"
@@ -65,7 +66,7 @@ struct CellBounds {
 
 struct MeanCellBounds::Table {
   SearchErrorBounds error_bounds;
-  std::unordered_map<CellKey, CellBounds, CellKeyHash> cells;
+  CellTable<CellBounds> cells;
   // The first pass over A0's vertices: each vertex's point and answer, and whether the
   // answer came from a query (not from lying on a face shared with B0).
   std::vector<Point> vertex_points;
@@ -114,9 +115,11 @@ class MeanSearch {
   }
 
   // The first bounds of `cells` (bound()), in parallel (one query each, no shared state),
-  // taken from `first` where it holds the same cell and B is its B0 within the cell's reach.
-  // Returns how many came from the replayed steps.
-  std::size_t bound_each(std::vector<MeanCell>& cells, const FirstBounds* first) const {
+  // taken from `first` where it holds the same cell and B is its B0 within the cell's reach
+  // (`faces`: the face of A of each cell, tried first as A0's). Returns how many came from
+  // the replayed steps.
+  std::size_t bound_each(std::vector<MeanCell>& cells, const std::vector<int>& faces,
+                         const FirstBounds* first) const {
     std::vector<char> done(cells.size(), 0);
     if (first && first->bounds && first->bounds->table().serves(options_)) {
       const auto& table = first->bounds->table().cells;
@@ -133,10 +136,10 @@ class MeanSearch {
         }
         if (!mapped)
           continue;
-        const auto it = table.find(key_of(as_b0));
-        if (it == table.end() || it->second.reach.meets(first->change.changed))
+        const CellBounds* recorded = table.find(key_of(as_b0), faces[i]);
+        if (!recorded || recorded->reach.meets(first->change.changed))
           continue;
-        cells[i].take_bounds(it->second.bounds);
+        cells[i].take_bounds(recorded->bounds);
         done[i] = 1;
       }
     }
@@ -183,18 +186,23 @@ class MeanSearch {
     const VertexDistances& vertices = vertex_distances(a, scene_, known, computed);
     result_.queries += computed.queries;
     std::vector<MeanCell> initial;
+    std::vector<int> initial_faces;  // the face of A of each first cell
     if (known.unshared_faces) {
       // A's area and its faces not on B as the caller knows them (SearchStart).
       total_area_ = known.area;
       initial.reserve(known.unshared_faces->size());
+      initial_faces.reserve(known.unshared_faces->size());
       for (int f : *known.unshared_faces) {
         MeanCell cell(face_cell(a, FaceHandle(f), vertices));
         cell.area = triangle_area(cell.corners);
-        if (cell.area > 0.0)
+        if (cell.area > 0.0) {
           initial.push_back(std::move(cell));
+          initial_faces.push_back(f);
+        }
       }
     } else {
       initial.reserve(a.n_faces());
+      initial_faces.reserve(a.n_faces());
       for (auto f : a.faces()) {
         MeanCell cell(face_cell(a, f, vertices));
         cell.area = triangle_area(cell.corners);
@@ -204,11 +212,12 @@ class MeanSearch {
         if (known.b_face_of_a && (*known.b_face_of_a)[f.idx()] >= 0)
           continue;  // lies on B: contributes zero, exactly
         initial.push_back(std::move(cell));
+        initial_faces.push_back(f.idx());
       }
     }
     // The first cells' bounds; queued below in face order, so the result does not depend
     // on the number of threads.
-    result_.steps_taken += bound_each(initial, first_bounds);
+    result_.steps_taken += bound_each(initial, initial_faces, first_bounds);
     if (record_) {
       for (const MeanCell& cell : initial)
         record_->bounded.emplace(key_of(cell), cell.bounds());
@@ -418,20 +427,24 @@ MeanCellBounds::MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_s
   for (auto v : a0.vertices())
     table_->vertex_points.push_back(a0.point(v));
   std::vector<MeanCell> cells;
+  std::vector<int> faces;
   cells.reserve(a0.n_faces());
+  faces.reserve(a0.n_faces());
   for (auto f : a0.faces()) {
     if (b0_face_of_a0[f.idx()] >= 0)
       continue;
     MeanCell cell(face_cell(a0, f, vertices));
-    if (triangle_area(cell.corners) > 0.0)
+    if (triangle_area(cell.corners) > 0.0) {
       cells.push_back(std::move(cell));
+      faces.push_back(f.idx());
+    }
   }
   std::vector<GrowingBox> reach;
   MeanSearch(b0_scene, options).bound_each_with_reach(cells, reach);
   table_->cells.reserve(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const MeanCell& cell = cells[i];
-    table_->cells.emplace(key_of(cell), CellBounds{cell.bounds(), reach[i]});
+    table_->cells.add(faces[i], key_of(cell), CellBounds{cell.bounds(), reach[i]});
   }
 }
 
