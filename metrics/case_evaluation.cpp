@@ -3,6 +3,7 @@
 #include "core/geometry.h"
 #include "core/region_segmentation.h"
 #include "metrics/embree/triangle_scene.h"
+#include "metrics/face_subset.h"
 #include "metrics/feature_recovery.h"
 #include "metrics/hole_matching.h"
 
@@ -41,6 +42,16 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
         complete_cone_answers_ = std::make_unique<InputConeAnswers>(
             tally_samples(c.complete, options.literature_samples, *complete_sampled_faces_),
             *input_scene_, cone);
+        // The hole region's truth (the removed faces) is sampled as each job samples it
+        // (every face, literature_metrics.h), its cones asked of the input once here.
+        const std::vector<int> removed = removed_faces(c);
+        if (!removed.empty()) {
+          const Mesh truth = face_subset(c.complete, removed);
+          truth_cone_answers_ = std::make_unique<InputConeAnswers>(
+              tally_samples(truth, options.hole_literature_samples,
+                            sampled_faces(face_areas(truth), nullptr)),
+              *input_scene_, cone);
+        }
       }
     }
   }

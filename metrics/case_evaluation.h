@@ -31,10 +31,12 @@ class CaseEvaluation {
   /// model's faces against the input (a repair is the input away from its new faces); the
   /// same two tables for the Hausdorff searches (hausdorff_distance.h, HausdorffCellBounds);
   /// where the searches of a repair that appends to the input start
-  /// (appended_repair_starts.h) and the faces' areas; where `options` test
-  /// self-intersections, the input's own intersecting pairs (validity.h); and the input's
-  /// topology, loop centroids and nearest vertices to the missing corners, so that each job's
-  /// validity, hole matching and corner errors look at its changes only.
+  /// (appended_repair_starts.h) and the faces' areas; the normal cones at the complete
+  /// model's and the hole region's truth's literature samples against the input
+  /// (input_cone_answers.h); where `options` test self-intersections, the input's own
+  /// intersecting pairs (validity.h); and the input's topology, loop centroids and nearest
+  /// vertices to the missing corners, so that each job's validity, hole matching and corner
+  /// errors look at its changes only.
   CaseEvaluation(const Case& c, const EvaluationOptions& options);
   ~CaseEvaluation();
   CaseEvaluation(const CaseEvaluation&) = delete;
@@ -72,6 +74,10 @@ class CaseEvaluation {
   /// gives) against the input (input_cone_answers.h), or nullptr where the case has no
   /// complete model, no input faces or no literature metrics.
   const InputConeAnswers* complete_cone_answers() const { return complete_cone_answers_.get(); }
+  /// The same at the hole region's truth's samples (the removed faces, sampled as the hole
+  /// region's literature metrics sample them), or nullptr where the case has no removed
+  /// faces either.
+  const InputConeAnswers* truth_cone_answers() const { return truth_cone_answers_.get(); }
   /// The input's faces' first Hausdorff bounds against the complete model, or nullptr.
   const HausdorffCellBounds* input_hausdorff_bounds() const {
     return input_hausdorff_bounds_.get();
@@ -107,6 +113,7 @@ class CaseEvaluation {
   std::optional<SampledFaces> input_sampled_faces_;
   std::optional<SampledFaces> complete_sampled_faces_;
   std::unique_ptr<InputConeAnswers> complete_cone_answers_;
+  std::unique_ptr<InputConeAnswers> truth_cone_answers_;
   std::vector<double> complete_face_areas_;
   std::optional<InputSelfIntersections> input_self_intersections_;
   InputTopology input_topology_;

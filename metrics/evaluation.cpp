@@ -127,16 +127,6 @@ SharedFirstBounds shared_first_bounds(const Case& c, const MethodResult& result,
   return first;
 }
 
-// The faces of the complete model removed to make the case's holes, each once, in order.
-std::vector<int> removed_faces(const Case& c) {
-  std::vector<int> removed;
-  for (const auto& hole : c.holes)
-    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
-  std::sort(removed.begin(), removed.end());
-  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
-  return removed;
-}
-
 // The hole region's searches: the whole model's, with the hole's own mean error bound and
 // query budget.
 SurfaceDistanceOptions hole_region_options(const EvaluationOptions& options,
@@ -364,15 +354,21 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   // The hole region first: where the whole model's unshared faces are the hole region's (no
   // noise, a patch of new faces), the whole model's samples are its samples, and their
   // answers are taken from it (SampledAnswers: the same numbers).
+  // The truth's samples against the repair: where the repair's scene is the input's plus its
+  // patch, the case's answers against the input with the patch's added (input_cone_answers.h).
   std::optional<std::pair<SampledAgreement, SampledAgreement>> hole;
   SampledAnswers patch_answers, truth_answers;
   if (regions.truth && regions.patch) {
     SampledAgreementOptions hole_sampling = sampling;
     hole_sampling.samples = options.hole_literature_samples;
+    const InputConeAnswers* truth_cones = known ? known->truth_cone_answers() : nullptr;
+    std::optional<SampledAnswers> truth_known;
+    if (truth_cones && repaired_scene.base_part() == &truth_cones->input_scene())
+      truth_known = truth_cones->with_patch(repaired_scene.added_part());
     hole.emplace(sampled_agreement(*regions.patch, complete_scene, hole_sampling, nullptr, nullptr,
                                    &patch_answers),
-                 sampled_agreement(*regions.truth, repaired_scene, hole_sampling, nullptr, nullptr,
-                                   &truth_answers));
+                 sampled_agreement(*regions.truth, repaired_scene, hole_sampling, nullptr,
+                                   truth_known ? &*truth_known : nullptr, &truth_answers));
   }
   // Faces the two models share exactly count exactly (distance 0, the same normal).
   const SharedFaces& shared = regions.shared;

@@ -1,8 +1,18 @@
 #include "metrics/face_subset.h"
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace holebench {
+
+std::vector<int> removed_faces(const Case& c) {
+  std::vector<int> removed;
+  for (const auto& hole : c.holes)
+    removed.insert(removed.end(), hole.removed_faces.begin(), hole.removed_faces.end());
+  std::sort(removed.begin(), removed.end());
+  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  return removed;
+}
 
 Mesh face_subset(const Mesh& mesh, const std::vector<int>& faces) {
   Mesh out;

@@ -2,6 +2,7 @@
 // of new faces, the removed faces of the complete model).
 #pragma once
 
+#include "core/case.h"
 #include "core/mesh.h"
 
 #include <vector>
@@ -13,6 +14,10 @@ namespace holebench {
 /// non-manifold are still kept: each face gets its own three vertices where OpenMesh
 /// refuses to share them, so the subset always covers exactly the listed triangles.
 Mesh face_subset(const Mesh& mesh, const std::vector<int>& faces);
+
+/// The faces of the complete model removed to make the case's holes, each once, in index
+/// order: the hole region's truth (as a mesh: face_subset(c.complete, removed_faces(c))).
+std::vector<int> removed_faces(const Case& c);
 
 /// The indices of the faces of `mesh` marked `Provenance::New`, in index order.
 std::vector<int> new_face_indices(const Mesh& mesh);

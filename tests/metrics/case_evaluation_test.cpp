@@ -7,6 +7,8 @@
 #include "core/boundary_loops.h"
 #include "core/geometry.h"
 #include "generators/case_catalog.h"
+#include "metrics/face_subset.h"
+#include "metrics/literature_metrics.h"
 
 #include "tests/metrics/test_repairs.h"
 
@@ -80,6 +82,13 @@ TEST(CaseEvaluation, SharedPartsChangeNoMetric) {
         EXPECT_GT(shared.input_cell_bounds()->size(), c.input.n_faces() / 2);
         EXPECT_EQ(shared.input_hausdorff_bounds()->size(), c.input.n_faces());
         ASSERT_NE(shared.complete_hausdorff_bounds(), nullptr);
+        // The truth's cones are at the samples a job's hole region draws, so that it takes them.
+        ASSERT_NE(shared.truth_cone_answers(), nullptr);
+        const Mesh truth = face_subset(c.complete, removed_faces(c));
+        EXPECT_EQ(shared.truth_cone_answers()->points(),
+                  tally_samples(truth, options.hole_literature_samples,
+                                sampled_faces(face_areas(truth), nullptr))
+                      .points);
         EXPECT_EQ(shared.complete_hausdorff_bounds()->size(), c.complete.n_faces());
       }
       const std::string what = std::string(id) + " noise " + std::to_string(noise);
