@@ -22,6 +22,7 @@ class CellTable {
   void reserve(std::size_t faces) {
     keys_.reserve(faces);
     values_.reserve(faces);
+    entry_of_face_.reserve(faces);
     entry_of_key_.reserve(faces);
   }
 

@@ -91,9 +91,9 @@ void add_interval(Recorder& out, const IntervalNames& names, const DistanceInter
   out.add(names.upper, d.upper / diagonal);
 }
 
-// The whole model's mean searches' first bounds from what the case's jobs share: the
-// repair's kept faces against the complete model are the input's; the complete model against
-// the repair is the complete model against the input away from the repair's changes.
+// The whole model's mean and Hausdorff searches' first bounds from what the case's jobs share:
+// the repair's kept faces against the complete model are the input's; the complete model
+// against the repair is the complete model against the input away from the repair's changes.
 struct SharedFirstBounds {
   FirstBounds repaired_to_complete;
   FirstBounds complete_to_repaired;

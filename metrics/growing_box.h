@@ -1,6 +1,7 @@
 // An axis-aligned box that grows to hold points and balls, starting empty, and the test of
 // whether two boxes meet: the regions around a repair's new faces that the evaluation
-// compares with what it knows of the input (validity.cpp, mean_search.cpp).
+// compares with what it knows of the input (validity.cpp, feature_recovery.cpp,
+// mean_search.cpp, hausdorff_distance.cpp: surface_change.h).
 #pragma once
 
 #include "core/mesh.h"

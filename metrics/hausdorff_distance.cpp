@@ -41,19 +41,6 @@ struct RecordedCell {
   GrowingBox reach;
 };
 
-// The cell with its corners' nearest faces of B read as B0's (`b0_face_of_b`), or nullopt
-// where one of them is not a face of B0.
-std::optional<TriangleCell> as_cell_of_b0(const TriangleCell& cell,
-                                          const std::vector<int>& b0_face_of_b) {
-  TriangleCell as_b0 = cell;
-  for (int& face : as_b0.corner_face) {
-    if (face < 0 || static_cast<std::size_t>(face) >= b0_face_of_b.size() || b0_face_of_b[face] < 0)
-      return std::nullopt;
-    face = b0_face_of_b[face];
-  }
-  return as_b0;
-}
-
 }  // namespace
 
 struct HausdorffCellBounds::Table {

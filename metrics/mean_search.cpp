@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -125,18 +126,11 @@ class MeanSearch {
       const auto& table = first->bounds->table().cells;
       const std::vector<int>* b0_face_of_b = first->change.b0_face_of_b;
       for (std::size_t i = 0; i < cells.size(); ++i) {
-        TriangleCell as_b0 = cells[i];
-        bool mapped = true;
-        if (b0_face_of_b) {
-          for (int& face : as_b0.corner_face) {
-            if (face >= 0)
-              face = (*b0_face_of_b)[face];
-            mapped = mapped && face >= 0;
-          }
-        }
-        if (!mapped)
+        const std::optional<TriangleCell> as_b0 =
+            b0_face_of_b ? as_cell_of_b0(cells[i], *b0_face_of_b) : cells[i];
+        if (!as_b0)
           continue;
-        const CellBounds* recorded = table.find(key_of(as_b0), faces[i]);
+        const CellBounds* recorded = table.find(key_of(*as_b0), faces[i]);
         if (!recorded || recorded->reach.meets(first->change.changed))
           continue;
         cells[i].take_bounds(recorded->bounds);

@@ -6,7 +6,10 @@
 #pragma once
 
 #include "metrics/growing_box.h"
+#include "metrics/triangle_cell.h"
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace holebench {
@@ -23,5 +26,20 @@ struct SurfaceChange {
   /// not have.
   GrowingBox changed;
 };
+
+/// A cell of a search against B with its corners' nearest faces read as B0's
+/// (`b0_face_of_b`), to look it up among cells bounded against B0; nullopt where one of them
+/// is not a face of B0.
+inline std::optional<TriangleCell> as_cell_of_b0(const TriangleCell& cell,
+                                                 const std::vector<int>& b0_face_of_b) {
+  TriangleCell as_b0 = cell;
+  for (int& face : as_b0.corner_face) {
+    if (face < 0 || static_cast<std::size_t>(face) >= b0_face_of_b.size() ||
+        b0_face_of_b[static_cast<std::size_t>(face)] < 0)
+      return std::nullopt;
+    face = b0_face_of_b[static_cast<std::size_t>(face)];
+  }
+  return as_b0;
+}
 
 }  // namespace holebench

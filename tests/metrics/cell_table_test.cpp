@@ -43,7 +43,10 @@ TEST(CellTable, ASecondFaceWithAKeyAlreadyAddedFindsTheFirstValue) {
   table.add(3, key_number(5), 30);
   table.add(1, key_number(5), 10);  // the same cell on another face: the first value stays
   table.add(2, key_number(6), 20);
-  EXPECT_EQ(table.size(), 2u);
+  table.add(-1, key_number(7), 70);  // a cell of no face: found by its key alone
+  EXPECT_EQ(table.size(), 3u);
+  ASSERT_NE(table.find(key_number(7), -1), nullptr);
+  EXPECT_EQ(*table.find(key_number(7), 2), 70);
   for (int at : {1, 2, 3, -1}) {
     ASSERT_NE(table.find(key_number(5), at), nullptr) << at;
     EXPECT_EQ(*table.find(key_number(5), at), 30) << at;

@@ -217,9 +217,10 @@ TEST(HausdorffCellBounds, ReplayedSharedEdgeBoundsGiveTheSameSearch) {
 
 // The first bounds of the complete model's faces against the input, taken for a search
 // against a repair of the input (a fan closing: the input's faces kept, new faces after
-// them), where the repair differs from the input only outside what each cell's steps read
-// (SurfaceChange): the same search, bit for bit; most cells are taken, and the ones whose
-// centroid's ball meets the patch are not (without the changed box more would be).
+// them; or one input face dropped, the others kept in order), where the repair differs from
+// the input only outside what each cell's steps read (SurfaceChange): the same search, bit
+// for bit; most cells are taken, and the ones whose centroid's ball meets the changes are not
+// (without the changed box more would be).
 TEST(HausdorffCellBounds, TakenAgainstARepairOfB0GiveTheSameSearch) {
   for (const char* id : {"box/corner", "brep/k3/inner/convex-convex-convex/small"}) {
     const Case c = generators::make_case(id, 0, 25.0);
@@ -227,33 +228,39 @@ TEST(HausdorffCellBounds, TakenAgainstARepairOfB0GiveTheSameSearch) {
     const HausdorffCellBounds first(c.complete, input_scene,
                                     first_pass(c.complete, c.input, input_scene));
     EXPECT_EQ(first.size(), c.complete.n_faces()) << id;
-    const Mesh repaired = test::fan_closing(c.input);
-    const embree::TriangleScene repaired_scene(repaired);
-    const KeptFaces kept = kept_faces(c.input, repaired);
-    ASSERT_TRUE(kept.order_kept) << id;
-    SurfaceChange change;
-    change.b0_face_of_b = &kept.input_face_of_repaired;
-    change.b_face_of_b0 = &kept.repaired_face_of_input;
-    change.changed = changed_faces_box(c.input, repaired, kept);
-    SurfaceChange unchanged = change;
-    unchanged.changed = GrowingBox();
-    const double diagonal = bounding_box_diagonal(c.complete);
-    for (double bound : {1e-2, 1e-4, 1e-6}) {
-      HausdorffOptions options;
-      options.error_bound = bound * diagonal;
-      const DirectedHausdorff alone = directed_hausdorff(c.complete, repaired_scene, options);
-      const DirectedHausdorff taken =
-          directed_hausdorff(c.complete, repaired_scene, options, {}, &first, &change);
-      const std::string what = std::string(id) + " bound " + std::to_string(bound);
-      EXPECT_EQ(alone.cells_taken, 0u) << what;
-      EXPECT_GT(taken.cells_taken, c.complete.n_faces() / 2) << what;
-      EXPECT_EQ(alone.lower, taken.lower) << what;
-      EXPECT_EQ(alone.upper, taken.upper) << what;
-      EXPECT_EQ(alone.queries, taken.queries) << what;
-      EXPECT_EQ(alone.converged, taken.converged) << what;
-      const DirectedHausdorff careless =
-          directed_hausdorff(c.complete, repaired_scene, options, {}, &first, &unchanged);
-      EXPECT_LT(taken.cells_taken, careless.cells_taken) << what;
+    // The input's faces at their own indices, and (an input face dropped) one index lower.
+    for (const bool in_place : {true, false}) {
+      const Mesh repaired =
+          in_place ? test::fan_closing(c.input) : test::drop_in_order_and_fan(c.input);
+      const embree::TriangleScene repaired_scene(repaired);
+      const KeptFaces kept = kept_faces(c.input, repaired);
+      ASSERT_TRUE(kept.order_kept) << id;
+      ASSERT_EQ(kept.input_faces_in_place, in_place) << id;
+      SurfaceChange change;
+      change.b0_face_of_b = &kept.input_face_of_repaired;
+      change.b_face_of_b0 = &kept.repaired_face_of_input;
+      change.changed = changed_faces_box(c.input, repaired, kept);
+      SurfaceChange unchanged = change;
+      unchanged.changed = GrowingBox();
+      const double diagonal = bounding_box_diagonal(c.complete);
+      for (double bound : {1e-2, 1e-4, 1e-6}) {
+        HausdorffOptions options;
+        options.error_bound = bound * diagonal;
+        const DirectedHausdorff alone = directed_hausdorff(c.complete, repaired_scene, options);
+        const DirectedHausdorff taken =
+            directed_hausdorff(c.complete, repaired_scene, options, {}, &first, &change);
+        const std::string what =
+            std::string(id) + (in_place ? "" : " dropped") + " bound " + std::to_string(bound);
+        EXPECT_EQ(alone.cells_taken, 0u) << what;
+        EXPECT_GT(taken.cells_taken, c.complete.n_faces() / 2) << what;
+        EXPECT_EQ(alone.lower, taken.lower) << what;
+        EXPECT_EQ(alone.upper, taken.upper) << what;
+        EXPECT_EQ(alone.queries, taken.queries) << what;
+        EXPECT_EQ(alone.converged, taken.converged) << what;
+        const DirectedHausdorff careless =
+            directed_hausdorff(c.complete, repaired_scene, options, {}, &first, &unchanged);
+        EXPECT_LT(taken.cells_taken, careless.cells_taken) << what;
+      }
     }
   }
 }

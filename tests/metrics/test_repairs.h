@@ -52,4 +52,30 @@ inline Mesh exact_appended_closing(const Case& c) {
   return repaired;
 }
 
+/// The input without one face at its first hole's boundary, every other face and vertex at
+/// the input's index or (the faces after the dropped one) one index lower, in the input's
+/// order, then every hole closed by a fan: a repair that keeps the input's faces in order but
+/// not in place.
+inline Mesh drop_in_order_and_fan(const Mesh& input) {
+  const auto loop = find_boundary_loops(input).front();
+  const int dropped =
+      input.face_handle(input.opposite_halfedge_handle(loop.halfedges.front())).idx();
+  Mesh kept;
+  for (auto v : input.vertices())
+    kept.data(kept.add_vertex(input.point(v))).provenance = input.data(v).provenance;
+  for (auto f : input.faces()) {
+    if (f.idx() == dropped)
+      continue;
+    std::vector<VertexHandle> corners;
+    for (auto v : input.fv_range(f))
+      corners.push_back(VertexHandle(v.idx()));
+    const FaceHandle face = kept.add_face(corners);
+    if (face.is_valid()) {
+      kept.data(face).provenance = input.data(f).provenance;
+      kept.data(face).region = input.data(f).region;
+    }
+  }
+  return fan_closing(kept);
+}
+
 }  // namespace holebench::test
