@@ -353,9 +353,9 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
   sampling.samples = options.literature_samples;
   // The hole region first: where the whole model's unshared faces are the hole region's (no
   // noise, a patch of new faces), the whole model's samples are its samples, and their
-  // answers are taken from it (SampledAnswers: the same numbers).
-  // The truth's samples against the repair: where the repair's scene is the input's plus its
-  // patch, the case's answers against the input with the patch's added (input_cone_answers.h).
+  // answers are taken from it (SampledAnswers: the same numbers). The truth's samples against
+  // a repair whose scene is the input's plus its patch take the case's answers against the
+  // input with the patch's added (input_cone_answers.h).
   std::optional<std::pair<SampledAgreement, SampledAgreement>> hole;
   SampledAnswers patch_answers, truth_answers;
   if (regions.truth && regions.patch) {

@@ -18,7 +18,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace holebench {
@@ -45,23 +44,6 @@ struct RecordedCell {
 
 struct HausdorffCellBounds::Table {
   CellTable<RecordedCell> cells;
-
-  // The recorded steps of `cell`, of face `face` of A (tried as A0's face first), of a
-  // search against B (`change`: how B differs from B0; null: B is B0), or null where they
-  // are not the cell's against B.
-  const BoundSteps* find(const TriangleCell& cell, int face, const SurfaceChange* change) const {
-    if (!change || !change->b0_face_of_b) {
-      const RecordedCell* recorded = cells.find(key_of(cell), face);
-      return recorded ? &recorded->steps : nullptr;
-    }
-    const std::optional<TriangleCell> as_b0 = as_cell_of_b0(cell, *change->b0_face_of_b);
-    if (!as_b0)
-      return nullptr;
-    const RecordedCell* recorded = cells.find(key_of(*as_b0), face);
-    if (!recorded || recorded->reach.meets(change->changed))
-      return nullptr;
-    return &recorded->steps;
-  }
 };
 
 namespace {
@@ -109,8 +91,9 @@ class DirectedSearch {
         tbb::blocked_range<std::size_t>(0, initial.size(), 256), [&](const auto& range) {
           for (std::size_t i = range.begin(); i != range.end(); ++i) {
             if (table) {
-              if (const BoundSteps* recorded = table->find(initial[i], initial_faces[i], change)) {
-                RecordedSteps steps{*recorded};
+              if (const RecordedCell* recorded =
+                      find_against(table->cells, initial[i], initial_faces[i], change)) {
+                RecordedSteps steps{recorded->steps};
                 bounds[i] = bound_by_steps(initial[i], settled_now, steps);
                 taken[i] = 1;
                 continue;

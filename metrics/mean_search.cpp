@@ -16,7 +16,6 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -124,17 +123,11 @@ class MeanSearch {
     std::vector<char> done(cells.size(), 0);
     if (first && first->bounds && first->bounds->table().serves(options_)) {
       const auto& table = first->bounds->table().cells;
-      const std::vector<int>* b0_face_of_b = first->change.b0_face_of_b;
       for (std::size_t i = 0; i < cells.size(); ++i) {
-        const std::optional<TriangleCell> as_b0 =
-            b0_face_of_b ? as_cell_of_b0(cells[i], *b0_face_of_b) : cells[i];
-        if (!as_b0)
-          continue;
-        const CellBounds* recorded = table.find(key_of(*as_b0), faces[i]);
-        if (!recorded || recorded->reach.meets(first->change.changed))
-          continue;
-        cells[i].take_bounds(recorded->bounds);
-        done[i] = 1;
+        if (const CellBounds* recorded = find_against(table, cells[i], faces[i], &first->change)) {
+          cells[i].take_bounds(recorded->bounds);
+          done[i] = 1;
+        }
       }
     }
     std::size_t replayed = 0;

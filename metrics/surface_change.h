@@ -5,6 +5,7 @@
 // the bounds read of the input lies away from the repair's changes.
 #pragma once
 
+#include "metrics/cell_table.h"
 #include "metrics/growing_box.h"
 #include "metrics/triangle_cell.h"
 
@@ -40,6 +41,22 @@ inline std::optional<TriangleCell> as_cell_of_b0(const TriangleCell& cell,
     face = b0_face_of_b[static_cast<std::size_t>(face)];
   }
   return as_b0;
+}
+
+/// What `table` (cells bounded against B0, each value with the box `reach` of B0 its bounds
+/// read) holds for `cell`, of face `face` of A, in a search against B: its value where B is
+/// B0 (`change` null or without a face map), or where the cell's corners' nearest faces are
+/// B0's and B's changes miss its reach; else null.
+template <class Value>
+const Value* find_against(const CellTable<Value>& table, const TriangleCell& cell, int face,
+                          const SurfaceChange* change) {
+  if (!change || !change->b0_face_of_b)
+    return table.find(key_of(cell), face);
+  const std::optional<TriangleCell> as_b0 = as_cell_of_b0(cell, *change->b0_face_of_b);
+  if (!as_b0)
+    return nullptr;
+  const Value* recorded = table.find(key_of(*as_b0), face);
+  return recorded && !recorded->reach.meets(change->changed) ? recorded : nullptr;
 }
 
 }  // namespace holebench

@@ -474,8 +474,9 @@ TEST(LiteratureMetrics, ASampleLiesOnTheFaceAWalkAlongTheSumsFinds) {
       exact_hits += tally.cumulative[face] == at ? 1 : 0;
       ASSERT_EQ(samples.faces[k], static_cast<int>(face)) << k;
     }
-    if (exact)
+    if (exact) {
       EXPECT_EQ(exact_hits, count);  // the construction does what it says
+    }
   }
 }
 
