@@ -11,7 +11,9 @@
 //  - shaft: the segment from P along r to where the ray first meets the missing surface,
 //    or, if it misses it, to the projection of the missing surface's area centroid onto the
 //    ray (the arrow points at the hole: eq. 3 of the paper puts P = T - d r). It is free
-//    when the complete model does not intersect it before its end (less surface_tolerance);
+//    when the complete model does not intersect it before its end (less surface_tolerance
+//    and the single precision of Embree's ray parameter, 1e-6 of |P|_1 + the shaft's length:
+//    the end lies on the model, and a hit there is the end itself);
 //  - a sample s with unit normal n (of the complete model) is seen from a camera at P along
 //    a unit direction u when: the angle between s - P and u is at most half the field of
 //    view; it faces the camera (n . (P - s) > 0); and the holed model does not occlude the
