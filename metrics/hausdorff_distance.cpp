@@ -140,11 +140,18 @@ class DirectedSearch {
   }
 
   // The largest distance from the cell's corners to triangle `face` of B: an upper bound
-  // of d(., B) over the cell, since the distance to one triangle is convex.
-  double single_triangle_bound(const std::array<Point, 3>& corners, int face) const {
+  // of d(., B) over the cell, since the distance to one triangle is convex. Where a corner
+  // is at least `cap` away, that corner's distance (at least `cap`): min(cap, bound) is then
+  // cap either way.
+  double single_triangle_bound(const std::array<Point, 3>& corners, int face,
+                               double cap = std::numeric_limits<double>::infinity()) const {
+    const auto& t = scene_.triangle_of_face(face);
     double bound = 0.0;
-    for (double distance : corner_distances_to_triangle(corners, scene_.triangle_of_face(face)))
-      bound = std::max(bound, distance);
+    for (const Point& c : corners) {
+      bound = std::max(bound, (closest_point_on_triangle(c, t[0], t[1], t[2]) - c).norm());
+      if (bound >= cap)
+        break;
+    }
     return bound;
   }
 
@@ -157,7 +164,10 @@ class DirectedSearch {
   // straddles the shared edge is split until it is within the error bound of the edge,
   // which on a flat region triangulated otherwise takes cells along every such edge.
   // Infinity where the two triangles do not qualify.
-  double shared_edge_bound(const std::array<Point, 3>& corners, int face1, int face2) const {
+  // Where the bound reaches `cap` before every corner is taken, a value at least `cap`:
+  // min(cap, bound) is then cap either way.
+  double shared_edge_bound(const std::array<Point, 3>& corners, int face1, int face2,
+                           double cap = std::numeric_limits<double>::infinity()) const {
     const auto& t1 = scene_.triangle_of_face(face1);
     const auto& t2 = scene_.triangle_of_face(face2);
     constexpr double kNone = std::numeric_limits<double>::infinity();
@@ -201,14 +211,19 @@ class DirectedSearch {
     if (!((s1 > clear && s2 < -clear) || (s1 < -clear && s2 > clear)) ||
         !((s3 > clear && s4 < -clear) || (s3 < -clear && s4 > clear)))
       return kNone;
+    // Plus the rounding of the projection and of the distances (1e-12 of the size).
+    const double pad = 1e-12 * std::sqrt(scale);
     double bound = 0.0;
     for (const Point& c : corners) {
       const double to_first = (closest_point_on_triangle(c, t1[0], t1[1], t1[2]) - c).norm();
+      if (to_first <= bound)
+        continue;  // min(to_first, to_second) leaves the largest as it is
       const double to_second = (closest_point_on_triangle(c, a, b, q_on_plane) - c).norm();
       bound = std::max(bound, std::min(to_first, to_second));
+      if (bound + delta + pad >= cap)
+        break;  // rounding is monotone: the whole bound is at least this
     }
-    // Plus the rounding of the projection and of the distances (1e-12 of the size).
-    return bound + delta + 1e-12 * std::sqrt(scale);
+    return bound + delta + pad;
   }
 
   // The cell's upper bound and the distance found at its centroid: at most one query, no
@@ -233,9 +248,12 @@ class DirectedSearch {
     BoundSteps steps;
     steps.corners = live.corners();
     for (int i = 0; i < 3; ++i)
-      steps.shared_edge[i] = live.shared_edge(i);
-    steps.centroid_distance = live.centroid_distance();
-    steps.centroid_triangle = live.centroid_triangle();
+      steps.shared_edge[i] = live.shared_edge(i, std::numeric_limits<double>::infinity());
+    double cell_upper = steps.corners;
+    for (double bound : steps.shared_edge)
+      cell_upper = std::min(cell_upper, bound);
+    steps.centroid_distance = live.centroid_distance(cell_upper);
+    steps.centroid_triangle = live.centroid_triangle(std::numeric_limits<double>::infinity());
     return steps;
   }
 
@@ -259,29 +277,30 @@ class DirectedSearch {
       for (int i = 0; i < 3; ++i) {
         const int face = cell.corner_face[i];
         if (face >= 0 && (i == 0 || face != cell.corner_face[i - 1]))
-          upper = std::min(upper, search.single_triangle_bound(c, face));
+          upper = std::min(upper, search.single_triangle_bound(c, face, upper));
       }
       return upper;
     }
     // Bound (iii) of the edge from corner i to the next.
-    double shared_edge(int i) const {
+    double shared_edge(int i, double cap) const {
       const int f1 = cell.corner_face[i], f2 = cell.corner_face[(i + 1) % 3];
       if (f1 >= 0 && f2 >= 0 && f1 != f2)
-        return search.shared_edge_bound(cell.corners, f1, f2);
+        return search.shared_edge_bound(cell.corners, f1, f2, cap);
       return std::numeric_limits<double>::infinity();
     }
-    // The centroid's query, with an upper bound from the corners (1-Lipschitz).
-    double centroid_distance() {
+    // The centroid's query, with an upper bound from the corners (1-Lipschitz) and
+    // `cell_upper`, an upper bound over the whole cell (the steps before).
+    double centroid_distance(double cell_upper) {
       const auto& c = cell.corners;
       const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
-      const auto nearest =
-          search.scene_.closest_point(centroid, distance_bound_from_corners(cell, centroid));
+      const auto nearest = search.scene_.closest_point(
+          centroid, std::min(cell_upper, distance_bound_from_corners(cell, centroid)));
       nearest_face = nearest.face;
       return nearest.distance;
     }
-    // Bound (i) with the triangle nearest to the centroid.
-    double centroid_triangle() const {
-      return nearest_face >= 0 ? search.single_triangle_bound(cell.corners, nearest_face)
+    // Bound (i) with the triangle nearest to the centroid (see single_triangle_bound's cap).
+    double centroid_triangle(double cap) const {
+      return nearest_face >= 0 ? search.single_triangle_bound(cell.corners, nearest_face, cap)
                                : std::numeric_limits<double>::infinity();
     }
   };
@@ -290,9 +309,9 @@ class DirectedSearch {
   struct RecordedSteps {
     const BoundSteps& steps;
     double corners() const { return steps.corners; }
-    double shared_edge(int i) const { return steps.shared_edge[i]; }
-    double centroid_distance() const { return steps.centroid_distance; }
-    double centroid_triangle() const { return steps.centroid_triangle; }
+    double shared_edge(int i, double) const { return steps.shared_edge[i]; }
+    double centroid_distance(double) const { return steps.centroid_distance; }
+    double centroid_triangle(double) const { return steps.centroid_triangle; }
   };
 
   // The bound from the steps in order, each only where the bound is not settled yet; a step
@@ -306,13 +325,13 @@ class DirectedSearch {
     if (bound.upper <= settled)
       return bound;
     for (int i = 0; i < 3 && bound.upper > settled; ++i)
-      bound.upper = std::min(bound.upper, steps.shared_edge(i));
+      bound.upper = std::min(bound.upper, steps.shared_edge(i, bound.upper));
     if (bound.upper <= settled)
       return bound;
     bound.queried = true;
-    bound.centroid_distance = steps.centroid_distance();
+    bound.centroid_distance = steps.centroid_distance(bound.upper);
     if (bound.upper > largest_corner)
-      bound.upper = std::min(bound.upper, steps.centroid_triangle());
+      bound.upper = std::min(bound.upper, steps.centroid_triangle(bound.upper));
     return bound;
   }
 
@@ -340,9 +359,12 @@ class DirectedSearch {
     queue_.push(std::move(cell));
   }
 
-  // The midpoints queried first, then each child bounded and queued in turn.
+  // The midpoints queried first (each bounded also by the cell's upper bound, its
+  // priority), then each child bounded and queued in turn.
   void split(const TriangleCell& cell) {
-    const auto query_midpoint = [this](const Point& p, double bound) { return query(p, bound); };
+    const auto query_midpoint = [this, &cell](const Point& p, double bound) {
+      return query(p, std::min(bound, cell.priority));
+    };
     for (const TriangleCell& child : split_at_midpoints(cell, query_midpoint))
       push(child);
   }
