@@ -121,17 +121,23 @@ RTCRay make_ray(const Point& origin, const Point& direction, double t_near, doub
 
 namespace {
 
-std::vector<int> all_faces(const Mesh& mesh) {
-  std::vector<int> faces(mesh.n_faces());
-  for (std::size_t i = 0; i < faces.size(); ++i)
-    faces[i] = static_cast<int>(i);
+// The mesh's faces but those deleted and not yet collected (OpenMesh's delete_face() only
+// marks a face; garbage_collection() takes it out): a deleted face is no part of the surface,
+// and the searches' shortcuts leave it out too (changed_faces_box, surface_change.h).
+std::vector<int> faces_in_use(const Mesh& mesh) {
+  std::vector<int> faces;
+  faces.reserve(mesh.n_faces());
+  for (std::size_t i = 0; i < mesh.n_faces(); ++i) {
+    if (!mesh.status(FaceHandle(static_cast<int>(i))).deleted())
+      faces.push_back(static_cast<int>(i));
+  }
   return faces;
 }
 
 }  // namespace
 
 TriangleScene::TriangleScene(const Mesh& mesh, SceneBuild build)
-    : TriangleScene(mesh, all_faces(mesh), build) {}
+    : TriangleScene(mesh, faces_in_use(mesh), build) {}
 
 TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces, SceneBuild build) {
   device_ = shared_device();

@@ -42,6 +42,7 @@ enum class SceneBuild {
 
 class TriangleScene {
  public:
+  /// A scene of the mesh's faces (those deleted and not yet collected left out).
   explicit TriangleScene(const Mesh& mesh, SceneBuild build = SceneBuild::fast_queries);
   /// A scene of some of the mesh's faces only (face indices of `mesh`; answers still name
   /// the mesh's face indices).

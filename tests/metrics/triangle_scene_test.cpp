@@ -26,6 +26,37 @@ TEST(TriangleScene, ClosestPointOnABox) {
   EXPECT_NEAR(inside.distance, 0.1, 1e-12);
 }
 
+// A face deleted and not yet collected is no part of the surface: neither the nearest face
+// nor in the way of a ray, while the faces kept answer with their own indices.
+TEST(TriangleScene, FacesDeletedButNotCollectedAreLeftOut) {
+  Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 4.0});  // two triangles a side
+  std::vector<int> top;
+  for (auto f : box.faces()) {
+    if (region(box, f) == 5)
+      top.push_back(f.idx());
+  }
+  ASSERT_EQ(top.size(), 2u);
+  const auto faces_before = box.n_faces();
+  box.delete_face(box.face_handle(top[0]), false);
+  ASSERT_EQ(box.n_faces(), faces_before);  // marked only
+  const TriangleScene scene(box);
+  EXPECT_EQ(scene.triangle_count(), faces_before - 1);
+  // Above the top's two triangles: only the kept one is nearest, at height 2, wherever
+  // above the top the point is; the deleted one is nowhere nearest.
+  bool kept_seen = false;
+  for (double x : {0.1, 0.5, 1.0, 1.5, 1.9}) {
+    for (double y : {0.1, 0.75, 1.4}) {
+      const auto above = scene.closest_point(Point(x, y, 3.0));
+      EXPECT_NE(above.face, top[0]);
+      kept_seen = kept_seen || above.face == top[1];
+      const auto hit = scene.intersect(Point(x, y, 3.0), Point(0, 0, -1));
+      ASSERT_TRUE(hit.hit);
+      EXPECT_NE(hit.face, top[0]);
+    }
+  }
+  EXPECT_TRUE(kept_seen);
+}
+
 TEST(TriangleScene, RaysHitTheFrontFaceAndOcclusionAgrees) {
   const Mesh box = generators::make_box({Point(2.0, 1.5, 1.0), 0.25});
   const TriangleScene scene(box);
