@@ -465,9 +465,13 @@ void add_validity(const Case& c, const MethodResult& result, const std::vector<i
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
-  const Validity v =
-      validity(c.input, result.repaired, validity_options, known_input, kept,
-               shared ? &shared->input_topology() : nullptr, repaired_scene, &new_faces);
+  ValidityShortcuts known;
+  known.known_input = known_input;
+  known.kept_of_input = kept;
+  known.topology = shared ? &shared->input_topology() : nullptr;
+  known.repaired_scene = repaired_scene;
+  known.new_faces = &new_faces;
+  const Validity v = validity(c.input, result.repaired, validity_options, known);
   out.add_count(kOpenBoundaryLoopsCount, v.open_boundary_loops);
   out.add_flag(kIsClosed, v.open_boundary_loops == 0);
   out.add_count(kNonManifoldVerticesCount, v.non_manifold_vertices);

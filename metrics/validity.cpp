@@ -132,9 +132,10 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
 }
 
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
-                  const InputSelfIntersections* known_input, const KeptFaces* kept_of_input,
-                  const InputTopology* topology, const embree::TriangleScene* repaired_scene,
-                  const std::vector<int>* new_faces) {
+                  const ValidityShortcuts& known) {
+  const InputSelfIntersections* known_input = known.known_input;
+  const KeptFaces* kept_of_input = known.kept_of_input;
+  const InputTopology* topology = known.topology;
   Validity result;
   std::optional<TopologyCounts> counts;
   if (topology && kept_of_input)
@@ -156,7 +157,7 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
     cgal::SelfIntersections pairs;
     if (known_input) {
       pairs = kept_of_input ? self_intersections_from_input(repaired, *known_input, *kept_of_input,
-                                                            repaired_scene)
+                                                            known.repaired_scene)
                             : self_intersections_from_input(input, repaired, *known_input);
     } else {
       for (const auto& [f, g] : cgal::self_intersecting_pairs(repaired)) {
@@ -171,7 +172,7 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
   }
 
   std::vector<int> found_new_faces;
-  for (int index : new_face_indices(repaired, new_faces, found_new_faces)) {
+  for (int index : new_face_indices(repaired, known.new_faces, found_new_faces)) {
     const FaceHandle f(index);
     const auto t = face_corners(repaired, f);
     if (face_area(repaired, f) <= options.degenerate_area ||

@@ -70,23 +70,29 @@ struct InputSelfIntersections {
 /// CGAL's self-intersection test on the input alone.
 InputSelfIntersections input_self_intersections(const Mesh& input);
 
-/// Validity of `repaired`, the repair of `input`. With `known_input` (the input's own pairs,
-/// from input_self_intersections), the self-intersections are counted from them and from a
-/// test of the faces that are not the input's and of the input's faces in their bounding box
-/// (self_intersections_from_input): the same counts as the test of the whole repaired mesh.
-/// `kept_of_input` (optional): kept_faces(input, repaired), where the caller has it.
-/// `topology` (optional, with `kept_of_input`): input_topology(input), where the caller keeps
-/// it; the open loops, non-manifold vertices and orientation conflicts are then counted at the
-/// repair's changes (input_topology.h): the same counts.
-/// `repaired_scene` (optional, with `known_input` and `kept_of_input`): the repaired mesh's
-/// scene, which finds the kept faces near the others without a pass over every face.
-/// `new_faces` (optional): new_face_indices(repaired) (face_subset.h), where the caller has
-/// them: no pass over every face to find them again.
+/// What a caller already knows of the input and the repair, each optional: the same counts
+/// with less work.
+struct ValidityShortcuts {
+  /// The input's own pairs (input_self_intersections): the self-intersections are then
+  /// counted from them and from a test of the faces that are not the input's and of the
+  /// input's faces in their bounding box (self_intersections_from_input): the same counts as
+  /// the test of the whole repaired mesh.
+  const InputSelfIntersections* known_input = nullptr;
+  /// kept_faces(input, repaired).
+  const KeptFaces* kept_of_input = nullptr;
+  /// With `kept_of_input`: input_topology(input); the open loops, non-manifold vertices and
+  /// orientation conflicts are then counted at the repair's changes (input_topology.h).
+  const InputTopology* topology = nullptr;
+  /// With `known_input` and `kept_of_input`: the repaired mesh's scene, which finds the kept
+  /// faces near the others without a pass over every face.
+  const embree::TriangleScene* repaired_scene = nullptr;
+  /// new_face_indices(repaired) (face_subset.h): no pass over every face to find them again.
+  const std::vector<int>* new_faces = nullptr;
+};
+
+/// Validity of `repaired`, the repair of `input`.
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options = {},
-                  const InputSelfIntersections* known_input = nullptr,
-                  const KeptFaces* kept_of_input = nullptr, const InputTopology* topology = nullptr,
-                  const embree::TriangleScene* repaired_scene = nullptr,
-                  const std::vector<int>* new_faces = nullptr);
+                  const ValidityShortcuts& known = {});
 
 /// The self-intersections of `repaired` from the input's own pairs. The faces of `repaired`
 /// that are the input's (kept_faces.h; a rotated face is not kept, only tested again): two

@@ -110,7 +110,9 @@ TEST(Validity, SelfIntersectionsFromTheInputsPairsAreTheWholeTests) {
   EXPECT_EQ(from_input.patch_pairs, whole.patch_self_intersections);
   EXPECT_EQ(whole.self_intersections, known.pairs.size() + whole.patch_self_intersections);
   EXPECT_GE(whole.patch_self_intersections, 2u);  // a tetrahedron's face and the patch
-  EXPECT_EQ(validity(input, repaired, {}, &known).self_intersections, whole.self_intersections);
+  ValidityShortcuts shortcuts;
+  shortcuts.known_input = &known;
+  EXPECT_EQ(validity(input, repaired, {}, shortcuts).self_intersections, whole.self_intersections);
 
   // A repair that moved an input vertex: its faces are not the input's any more, and are
   // tested again.
