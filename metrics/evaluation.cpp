@@ -461,12 +461,11 @@ void add_validity(const Case& c, const MethodResult& result, const std::vector<i
                   const EvaluationOptions& options, double diagonal, const CaseEvaluation* shared,
                   const KeptFaces* kept, const embree::TriangleScene* repaired_scene,
                   Recorder& out) {
-  const InputSelfIntersections* known_input = shared ? shared->input_self_intersections() : nullptr;
   ValidityOptions validity_options;
   validity_options.degenerate_area = options.degenerate_area_rel_diag2 * diagonal * diagonal;
   validity_options.self_intersections = options.self_intersections;
   ValidityShortcuts known;
-  known.known_input = known_input;
+  known.input_pairs = shared ? shared->input_self_intersections() : nullptr;
   known.kept_of_input = kept;
   known.topology = shared ? &shared->input_topology() : nullptr;
   known.repaired_scene = repaired_scene;

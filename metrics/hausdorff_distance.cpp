@@ -140,15 +140,15 @@ class DirectedSearch {
   }
 
   // The largest distance from the cell's corners to triangle `face` of B: an upper bound
-  // of d(., B) over the cell, since the distance to one triangle is convex. Where a corner
-  // is at least `cap` away, that corner's distance (at least `cap`): min(cap, bound) is then
+  // of d(., B) over the cell, since the distance to one triangle is convex. It stops at the
+  // first corner at least `cap` away and returns that corner's distance: min(cap, bound) is
   // cap either way.
   double single_triangle_bound(const std::array<Point, 3>& corners, int face,
                                double cap = std::numeric_limits<double>::infinity()) const {
     const auto& t = scene_.triangle_of_face(face);
     double bound = 0.0;
     for (const Point& c : corners) {
-      bound = std::max(bound, (closest_point_on_triangle(c, t[0], t[1], t[2]) - c).norm());
+      bound = std::max(bound, point_triangle_distance(c, t));
       if (bound >= cap)
         break;
     }
@@ -215,10 +215,10 @@ class DirectedSearch {
     const double pad = 1e-12 * std::sqrt(scale);
     double bound = 0.0;
     for (const Point& c : corners) {
-      const double to_first = (closest_point_on_triangle(c, t1[0], t1[1], t1[2]) - c).norm();
+      const double to_first = point_triangle_distance(c, t1);
       if (to_first <= bound)
         continue;  // min(to_first, to_second) leaves the largest as it is
-      const double to_second = (closest_point_on_triangle(c, a, b, q_on_plane) - c).norm();
+      const double to_second = point_triangle_distance(c, {a, b, q_on_plane});
       bound = std::max(bound, std::min(to_first, to_second));
       if (bound + delta + pad >= cap)
         break;  // rounding is monotone: the whole bound is at least this

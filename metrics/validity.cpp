@@ -133,13 +133,11 @@ cgal::SelfIntersections self_intersections_from_input(const Mesh& input, const M
 
 Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions& options,
                   const ValidityShortcuts& known) {
-  const InputSelfIntersections* known_input = known.known_input;
   const KeptFaces* kept_of_input = known.kept_of_input;
-  const InputTopology* topology = known.topology;
   Validity result;
   std::optional<TopologyCounts> counts;
-  if (topology && kept_of_input)
-    counts = topology_from_input(input, repaired, *topology, *kept_of_input);
+  if (known.topology && kept_of_input)
+    counts = topology_from_input(input, repaired, *known.topology, *kept_of_input);
   if (counts) {
     result.open_boundary_loops = counts->open_boundary_loops;
     result.non_manifold_vertices = counts->non_manifold_vertices;
@@ -155,10 +153,10 @@ Validity validity(const Mesh& input, const Mesh& repaired, const ValidityOptions
 
   if (options.self_intersections) {
     cgal::SelfIntersections pairs;
-    if (known_input) {
-      pairs = kept_of_input ? self_intersections_from_input(repaired, *known_input, *kept_of_input,
-                                                            known.repaired_scene)
-                            : self_intersections_from_input(input, repaired, *known_input);
+    if (known.input_pairs) {
+      pairs = kept_of_input ? self_intersections_from_input(repaired, *known.input_pairs,
+                                                            *kept_of_input, known.repaired_scene)
+                            : self_intersections_from_input(input, repaired, *known.input_pairs);
     } else {
       for (const auto& [f, g] : cgal::self_intersecting_pairs(repaired)) {
         ++pairs.pairs;

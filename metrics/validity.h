@@ -77,7 +77,7 @@ struct ValidityShortcuts {
   /// counted from them and from a test of the faces that are not the input's and of the
   /// input's faces in their bounding box (self_intersections_from_input): the same counts as
   /// the test of the whole repaired mesh.
-  const InputSelfIntersections* known_input = nullptr;
+  const InputSelfIntersections* input_pairs = nullptr;
   /// kept_faces(input, repaired).
   const KeptFaces* kept_of_input = nullptr;
   /// With `kept_of_input`: input_topology(input); the open loops, non-manifold vertices and

@@ -207,10 +207,8 @@ ArrowQuality arrow_quality(const GuidanceArrow& arrow, const SurfaceSamples& mis
   quality.shaft_length = t_end;
   // The shaft ends on the model: Embree's single-precision ray parameter puts the hit there
   // up to about 1e-7 of the coordinates' size (a box's face 2 away was hit at 1.99999988,
-  // which is float(2 - 1e-7)), so the end's margin holds that rounding as well (1e-6, as the
-  // point queries' pad in triangle_scene.cpp).
-  const double end_margin =
-      tolerance + 1e-6 * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + t_end);
+  // which is float(2 - 1e-7)), so the end's margin holds that rounding as well.
+  const double end_margin = tolerance + single_precision_pad(coordinate_sum(p), t_end);
   quality.shaft_free =
       t_end <= 2.0 * tolerance || !complete_scene.occluded(p, r, 0.0, t_end - end_margin);
 

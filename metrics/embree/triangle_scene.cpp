@@ -70,7 +70,7 @@ bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
   // Padded by the single-precision rounding of the BVH's boxes and of the query point, then
   // rounded up, so that single precision never culls a closer triangle: the answer is the
   // nearest triangle (the smallest index among equals) whatever the BVH's layout.
-  const double pad = 1e-6 * (state->coordinate_sum + distance);
+  const double pad = single_precision_pad(state->coordinate_sum, distance);
   args->query->radius =
       std::nextafter(static_cast<float>(distance + pad), std::numeric_limits<float>::infinity());
   return true;
@@ -258,7 +258,7 @@ ClosestPoint TriangleScene::nearest_within(const Point& p, double distance_upper
   PointQueryState state;
   state.triangles = &triangles_;
   state.query = p;
-  state.coordinate_sum = std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]);
+  state.coordinate_sum = coordinate_sum(p);
   RTCPointQuery query;
   query.x = static_cast<float>(p[0]);
   query.y = static_cast<float>(p[1]);
@@ -268,8 +268,7 @@ ClosestPoint TriangleScene::nearest_within(const Point& p, double distance_upper
   if (std::isfinite(distance_upper_bound)) {
     // Padded by the single-precision rounding of the BVH's boxes and of the query point,
     // so that no triangle within the bound is culled; then rounded up.
-    const double pad =
-        1e-6 * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + distance_upper_bound);
+    const double pad = single_precision_pad(coordinate_sum(p), distance_upper_bound);
     query.radius = std::nextafter(static_cast<float>(distance_upper_bound + pad),
                                   std::numeric_limits<float>::infinity());
   }
@@ -317,7 +316,7 @@ std::optional<std::vector<int>> TriangleScene::faces_within(const Point& p, doub
   query.time = 0.0f;
   // Rounded up (and padded by the coordinates' single-precision rounding) so that the BVH
   // never culls a triangle within the radius.
-  const double pad = 1e-6 * (std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) + radius);
+  const double pad = single_precision_pad(coordinate_sum(p), radius);
   query.radius =
       std::nextafter(static_cast<float>(radius + pad), std::numeric_limits<float>::infinity());
   RTCPointQueryContext context;

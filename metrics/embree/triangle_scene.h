@@ -9,6 +9,7 @@
 #include "core/mesh.h"
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -39,6 +40,20 @@ enum class SceneBuild {
   fast_build,    ///< Embree's low quality (Morton codes): about 2.5x faster to build, queries
                  ///< about 10 % slower; for scenes built for a few thousand queries
 };
+
+/// The single-precision rounding of a query about a point whose coordinates sum in absolute
+/// value to `coordinate_sum`, at a distance `distance` along or from it: Embree's boxes, query
+/// point and ray parameters are floats (about 6e-8 of their size), padded here to 1e-6 so that
+/// no triangle within a radius is culled and a hit where a segment ends on a surface is taken
+/// as its end.
+inline double single_precision_pad(double coordinate_sum, double distance) {
+  return 1e-6 * (coordinate_sum + distance);
+}
+
+/// |x| + |y| + |z| of `p`: the scale of its single-precision rounding.
+inline double coordinate_sum(const Point& p) {
+  return std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]);
+}
 
 class TriangleScene {
  public:

@@ -41,8 +41,8 @@ TEST(TriangleScene, FacesDeletedButNotCollectedAreLeftOut) {
   ASSERT_EQ(box.n_faces(), faces_before);  // marked only
   const TriangleScene scene(box);
   EXPECT_EQ(scene.triangle_count(), faces_before - 1);
-  // Above the top's two triangles: only the kept one is nearest, at height 2, wherever
-  // above the top the point is; the deleted one is nowhere nearest.
+  // Above the top's two triangles: the deleted one is nowhere nearest nor hit (a ray through
+  // it goes on to the bottom), and the kept one is nearest somewhere.
   bool kept_seen = false;
   for (double x : {0.1, 0.5, 1.0, 1.5, 1.9}) {
     for (double y : {0.1, 0.75, 1.4}) {

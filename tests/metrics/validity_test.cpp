@@ -111,7 +111,7 @@ TEST(Validity, SelfIntersectionsFromTheInputsPairsAreTheWholeTests) {
   EXPECT_EQ(whole.self_intersections, known.pairs.size() + whole.patch_self_intersections);
   EXPECT_GE(whole.patch_self_intersections, 2u);  // a tetrahedron's face and the patch
   ValidityShortcuts shortcuts;
-  shortcuts.known_input = &known;
+  shortcuts.input_pairs = &known;
   EXPECT_EQ(validity(input, repaired, {}, shortcuts).self_intersections, whole.self_intersections);
 
   // A repair that moved an input vertex: its faces are not the input's any more, and are
