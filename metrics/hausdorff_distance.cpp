@@ -18,13 +18,15 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace holebench {
 namespace {
 
 // The parts of a cell's bound (DirectedSearch::bound_of) that do not depend on how much is
-// settled: bound (ii) then (i) at the corners, each of the three shared-edge bounds (iii)
+// settled: bound (ii) then (i) with the matching face and at the corners, each of the three
+// shared-edge bounds (iii)
 // (infinity where its two faces do not qualify), and the centroid's distance with the
 // single-triangle bound of its nearest face (infinity where it has none).
 struct BoundSteps {
@@ -34,11 +36,21 @@ struct BoundSteps {
   double centroid_triangle = 0.0;
 };
 
-// A cell's recorded steps and the box of the ball of B0 its centroid's query read.
+// A cell's recorded steps and the box of what they read of B0 beyond its corners' nearest
+// faces: the ball its centroid's query read and the corners' nearest vertices.
 struct RecordedCell {
   BoundSteps steps;
   GrowingBox reach;
 };
+
+// Coordinate by coordinate: breaks ties between equally near points whatever their order.
+bool point_less(const Point& p, const Point& q) {
+  for (int i = 0; i < 3; ++i) {
+    if (p[i] != q[i])
+      return p[i] < q[i];
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -143,16 +155,100 @@ class DirectedSearch {
   // of d(., B) over the cell, since the distance to one triangle is convex. It stops at the
   // first corner at least `cap` away and returns that corner's distance: min(cap, bound) is
   // cap either way.
+  // `first`: the corner taken first (the value is the same whatever the order; the nearest
+  // face of corner i is best tried from another corner, which is likelier to stop early).
   double single_triangle_bound(const std::array<Point, 3>& corners, int face,
-                               double cap = std::numeric_limits<double>::infinity()) const {
-    const auto& t = scene_.triangle_of_face(face);
+                               double cap = std::numeric_limits<double>::infinity(),
+                               int first = 0) const {
+    return single_triangle_bound(corners, scene_.triangle_of_face(face), cap, first);
+  }
+  static double single_triangle_bound(const std::array<Point, 3>& corners,
+                                      const std::array<Point, 3>& t, double cap, int first = 0) {
     double bound = 0.0;
-    for (const Point& c : corners) {
-      bound = std::max(bound, point_triangle_distance(c, t));
+    for (int k = 0; k < 3; ++k) {
+      bound = std::max(bound, point_triangle_distance(corners[(first + k) % 3], t));
       if (bound >= cap)
         break;
     }
     return bound;
+  }
+
+ public:
+  // For each corner of the cell, the vertex of B nearest to it among its nearest face's
+  // (ties: the smaller point, coordinate by coordinate, whatever the face's vertex order);
+  // none where a corner has no nearest face.
+  std::optional<std::array<VertexHandle, 3>> nearest_vertices(const TriangleCell& cell) const {
+    const Mesh& b = scene_.mesh();
+    const Point* points = b.points();
+    std::array<VertexHandle, 3> nearest;
+    for (int i = 0; i < 3; ++i) {
+      if (cell.corner_face[i] < 0)
+        return std::nullopt;
+      double best = std::numeric_limits<double>::infinity();
+      auto h = b.halfedge_handle(FaceHandle(cell.corner_face[i]));
+      for (int c = 0; c < 3; ++c, h = b.next_halfedge_handle(h)) {
+        const VertexHandle v = b.to_vertex_handle(h);
+        const Point& p = points[v.idx()];
+        const double d = (p - cell.corners[i]).sqrnorm();
+        if (d < best || (d == best && point_less(p, points[nearest[i].idx()]))) {
+          best = d;
+          nearest[i] = v;
+        }
+      }
+    }
+    return nearest;
+  }
+
+ private:
+  // The face of B whose corners are `vertices` (the smallest index where several are), or -1:
+  // among the faces around the first vertex (its outgoing halfedges), the one whose other two
+  // corners are the other two vertices.
+  int face_of_vertices(const std::array<VertexHandle, 3>& vertices) const {
+    if (vertices[0] == vertices[1] || vertices[1] == vertices[2] || vertices[2] == vertices[0])
+      return -1;
+    const Mesh& b = scene_.mesh();
+    const HalfedgeHandle first = b.halfedge_handle(vertices[0]);
+    if (!first.is_valid())
+      return -1;
+    int found = -1;
+    HalfedgeHandle h = first;
+    std::size_t steps = 0;  // a guard where deleted faces left the ring open
+    do {
+      const FaceHandle f = b.face_handle(h);
+      if (f.is_valid() && !b.status(f).deleted() && (found < 0 || f.idx() < found)) {
+        const VertexHandle u = b.to_vertex_handle(h);
+        const VertexHandle w = b.to_vertex_handle(b.next_halfedge_handle(h));
+        if ((u == vertices[1] && w == vertices[2]) || (u == vertices[2] && w == vertices[1]))
+          found = f.idx();
+      }
+      h = b.next_halfedge_handle(b.opposite_halfedge_handle(h));
+    } while (h != first && ++steps < b.n_halfedges());
+    return found;
+  }
+
+  // The triangle of face `face` of B, its corners in the order of the scene's triangles.
+  std::array<Point, 3> triangle_of_mesh_face(int face) const {
+    const Mesh& b = scene_.mesh();
+    std::array<Point, 3> t;
+    auto h = b.halfedge_handle(FaceHandle(face));
+    for (int c = 0; c < 3; ++c, h = b.next_halfedge_handle(h))
+      t[c] = b.point(b.to_vertex_handle(h));
+    return t;
+  }
+
+  // Bound (i) with the matching face: the face of B spanned by the corners' nearest vertices
+  // (nearest_vertices()), where B has one. Where B is A moved or perturbed by less than its edges
+  // (a noisy input against its complete model, a remeshed copy), it is the copy of the cell's face
+  // and bounds the cell within the perturbation, where the corners' nearest faces (around the
+  // copies of its corners) leave a bound of the order of its size. Infinity where there is none.
+  double matching_face_bound(const TriangleCell& cell, double cap) const {
+    const auto vertices = nearest_vertices(cell);
+    if (!vertices)
+      return std::numeric_limits<double>::infinity();
+    const int face = face_of_vertices(*vertices);
+    if (face < 0)
+      return std::numeric_limits<double>::infinity();
+    return single_triangle_bound(cell.corners, triangle_of_mesh_face(face), cap);
   }
 
   // Bound (iii): two triangles of B that share an edge (the same two points, bit for bit)
@@ -267,17 +363,19 @@ class DirectedSearch {
     // Bound (ii): every point lies within longest edge / sqrt(3) of a corner (the
     // equilateral triangle is the worst case), and the distance is 1-Lipschitz. Then bound
     // (i): the distance to one triangle of B is convex, so its maximum over the cell is at
-    // a corner. Candidates: the triangles nearest to the corners.
+    // a corner. Candidates: the matching face (first: where it applies it is the tightest,
+    // and caps the others' corners), then the triangles nearest to the corners.
     double corners() const {
       const auto& c = cell.corners;
       const auto& d = cell.corner_distance;
       const double longest = std::sqrt(
           std::max({(c[1] - c[0]).sqrnorm(), (c[2] - c[1]).sqrnorm(), (c[0] - c[2]).sqrnorm()}));
       double upper = *std::max_element(d.begin(), d.end()) + longest * 0.57735026919;
+      upper = std::min(upper, search.matching_face_bound(cell, upper));
       for (int i = 0; i < 3; ++i) {
         const int face = cell.corner_face[i];
         if (face >= 0 && (i == 0 || face != cell.corner_face[i - 1]))
-          upper = std::min(upper, search.single_triangle_bound(c, face, upper));
+          upper = std::min(upper, search.single_triangle_bound(c, face, upper, (i + 1) % 3));
       }
       return upper;
     }
@@ -414,6 +512,12 @@ HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleS
       const double d = recorded[i].steps.centroid_distance;
       const double radius =
           d + 1e-9 * (d + std::abs(centroid[0]) + std::abs(centroid[1]) + std::abs(centroid[2]));
+      // The matching face's step read the faces of B0 on the corners' nearest vertices: a
+      // face of B on them that B0 lacks (or the other way) lies within their box.
+      if (const auto vertices = search.nearest_vertices(cells[i])) {
+        for (VertexHandle v : *vertices)
+          recorded[i].reach.add(b0_scene.mesh().point(v));
+      }
       if (std::isfinite(radius)) {
         recorded[i].reach.add_ball(centroid, radius);
       } else {  // no answer within reach, or no finite point: it read all of B0

@@ -7,7 +7,9 @@
 //  - every triangle t of A has an upper bound U(t) >= max over t of d(x, B), the smaller of
 //    (i) max over t's corners of their distance to one single triangle T of B (distance
 //        to a triangle is convex, so its maximum over t is at a corner; T is tried among
-//        the triangles nearest to t's centroid and corners), and
+//        the triangles nearest to t's centroid and corners, and the matching face: the
+//        triangle of B whose corners are the vertices of B nearest to t's corners, which
+//        where B is A perturbed by less than its edges is the copy of t), and
 //    (ii) max over the corners of d(corner, B) + longest edge / sqrt(3) (every point of t
 //        lies within that of a corner, and d(., B) is 1-Lipschitz), and
 //    (iii) for two triangles of B nearest to t's corners that share an edge and whose union,
@@ -80,17 +82,18 @@ DirectedHausdorff directed_hausdorff(const Mesh& a, const embree::TriangleScene&
 /// face's cell (its corners in the face's order, their distances to B0 and nearest faces of
 /// B0, as the first pass over A0's vertices gives them) with every step of its upper bound
 /// (i)-(iii) and its centroid's query, taken whether or not the search would need them, and
-/// the box of the ball of B0 its centroid's query read. A search of another mesh A against a
-/// B replays them for every face of A whose cell is the same, bit for bit, where B is B0
-/// (the same triangles in the same order) or differs from it only outside that box
-/// (SurfaceChange: the steps read B0's triangles at the corners' and the centroid's nearest
-/// faces, which B has too, and the centroid's query, which no face of B inside its ball
-/// changes): each step in the order and under the conditions the search takes it, so that
-/// the cell gets the same bound, counts the same query and the search gives the same result
-/// as without them. Built once per case (case_evaluation.h): the input's faces against the
-/// complete model, which a repair keeps for the most part, so that each job bounds only the
-/// faces it made or changed; and the complete model's faces against the input, which a
-/// repair is away from its patch.
+/// the box of the ball of B0 its centroid's query read and of the corners' nearest vertices.
+/// A search of another mesh A against a B replays them for every face of A whose cell is the
+/// same, bit for bit, where B is B0 (the same triangles in the same order) or differs from it
+/// only outside that box (SurfaceChange: the steps read B0's triangles at the corners' and
+/// the centroid's nearest faces, which B has too, the faces on the corners' nearest vertices
+/// (the matching face), which a face of B or B0 the other lacks would lie within the box of,
+/// and the centroid's query, which no face of B inside its ball changes): each step in the order
+/// and under the conditions the search takes it, so that the cell gets the same bound, counts the
+/// same query and the search gives the same result as without them. Built once per case
+/// (case_evaluation.h): the input's faces against the complete model, which a repair keeps for the
+/// most part, so that each job bounds only the faces it made or changed; and the complete model's
+/// faces against the input, which a repair is away from its patch.
 class HausdorffCellBounds {
  public:
   /// `first_pass`: A0's against B0 (vertex_distances.h; the faces A0 shares with B0 need no

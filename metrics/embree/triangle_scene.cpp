@@ -139,7 +139,8 @@ std::vector<int> faces_in_use(const Mesh& mesh) {
 TriangleScene::TriangleScene(const Mesh& mesh, SceneBuild build)
     : TriangleScene(mesh, faces_in_use(mesh), build) {}
 
-TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces, SceneBuild build) {
+TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces, SceneBuild build)
+    : mesh_(&mesh) {
   device_ = shared_device();
   rtcRetainDevice(device_);
   last_embree_error.clear();
@@ -204,7 +205,8 @@ TriangleScene::TriangleScene(const Mesh& mesh, const std::vector<int>& faces, Sc
 TriangleScene::TriangleScene(const TriangleScene& base, const std::vector<int>& face_of_base_face,
                              const std::vector<int>& base_face_of_face, const Mesh& mesh,
                              const std::vector<int>& added, SceneBuild build)
-    : base_(&base),
+    : mesh_(&mesh),
+      base_(&base),
       face_of_base_face_(&face_of_base_face),
       base_face_of_face_(&base_face_of_face),
       added_(added.empty() ? nullptr : std::make_unique<TriangleScene>(mesh, added, build)) {}

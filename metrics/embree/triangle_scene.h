@@ -57,7 +57,9 @@ inline double coordinate_sum(const Point& p) {
 
 class TriangleScene {
  public:
-  /// A scene of the mesh's faces (those deleted and not yet collected left out).
+  /// A scene of the mesh's faces (those deleted and not yet collected left out). The scene
+  /// keeps a reference to `mesh` (mesh()): the mesh must outlive the scene where mesh() is
+  /// read (the Hausdorff search reads its connectivity).
   explicit TriangleScene(const Mesh& mesh, SceneBuild build = SceneBuild::fast_queries);
   /// A scene of some of the mesh's faces only (face indices of `mesh`; answers still name
   /// the mesh's face indices).
@@ -114,6 +116,9 @@ class TriangleScene {
 
   /// The triangle of `face` (the mesh's face index) as three points.
   const std::array<Point, 3>& triangle_of_face(int face) const;
+  /// The mesh the scene was built from (for a scene made of a base and an added one, the
+  /// mesh given with them), with every face, whether or not the scene holds it.
+  const Mesh& mesh() const { return *mesh_; }
 
   std::size_t triangle_count() const;
 
@@ -132,6 +137,7 @@ class TriangleScene {
   /// single-precision rounding), or face -1 and an infinite distance where there is none.
   ClosestPoint nearest_within(const Point& p, double distance_upper_bound) const;
 
+  const Mesh* mesh_ = nullptr;
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
   std::vector<std::array<Point, 3>> triangles_;  // by Embree primitive id

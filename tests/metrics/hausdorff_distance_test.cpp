@@ -96,6 +96,30 @@ TEST(HausdorffDistance, OneFlatSquareTriangulatedTwoWaysConvergesAtZero) {
   EXPECT_LT(result.a_to_b.queries + result.b_to_a.queries, 100'000u);
 }
 
+// A curved surface against its copy moved by 1e-7 (far less than its edges, about 1): the
+// corners' nearest faces are around the copies of the corners, and the matching face (the
+// copy of each face, spanned by the corners' nearest vertices) bounds every face within the
+// move, so no face needs its centroid queried or a split: one query per vertex and direction.
+TEST(HausdorffDistance, ACopyMovedLessThanItsEdgesIsBoundedByItsMatchingFaces) {
+  TriangleSoup surface = test::grid_soup(20);
+  for (auto& p : surface.points)
+    p[2] = 2.0 * std::sin(0.4 * p[0]) * std::cos(0.3 * p[1]);
+  const Mesh a = build_mesh(surface);
+  Mesh b = a;
+  const Point move(1e-7, -1e-7, 1e-7);
+  for (auto v : b.vertices())
+    b.point(v) += move;
+  HausdorffOptions options;
+  options.error_bound = 1e-4 * bounding_box_diagonal(a);
+  const HausdorffResult result = hausdorff_distance(a, b, options);
+  ASSERT_TRUE(result.converged());
+  EXPECT_EQ(result.a_to_b.queries, a.n_vertices());
+  EXPECT_EQ(result.b_to_a.queries, b.n_vertices());
+  EXPECT_LE(result.upper(), move.norm() * (1.0 + 1e-6));
+  EXPECT_GT(result.lower(), 0.0);
+  expect_agrees_with_cgal(a, b, options.error_bound);
+}
+
 // Analytic one-sided distances: a 3x3 grid against its first two columns (x <= 2). The
 // farthest point of the full grid from the part is at x = 3: distance 1; the other way 0.
 TEST(HausdorffDistance, OneSidedDistancesDiffer) {

@@ -243,7 +243,8 @@ TEST(MeanDistance, AffineDistanceIsExactFromThePlaneBounds) {
   for (auto& p : floor.points)
     p = Point(p[0] * 4.0 - 1.5, p[1] * 4.0 - 1.5, 0.0);
   const Mesh a = build_mesh(ramp);
-  const embree::TriangleScene b_scene(build_mesh(floor));
+  const Mesh b = build_mesh(floor);
+  const embree::TriangleScene b_scene(b);
   MeanDistanceOptions options;
   options.error_bound = 1e-12;
   options.relative_error_bound = 0.0;
