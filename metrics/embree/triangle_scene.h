@@ -72,8 +72,8 @@ class TriangleScene {
   /// the same triangle, corner for corner; `base_face_of_face`: the other way, or -1), in the
   /// same order (a later base face is a later face), and `added` must be every other face of
   /// `mesh`. Then every answer is the one a scene of the whole `mesh` gives: the same nearest
-  /// triangle (the smallest face index among equals), the same faces within a radius. `base`
-  /// and the two maps must outlive the scene.
+  /// triangle (the smallest face index among equals), the same faces within a radius. `base`,
+  /// the two maps and `mesh` (where mesh() is read) must outlive the scene.
   TriangleScene(const TriangleScene& base, const std::vector<int>& face_of_base_face,
                 const std::vector<int>& base_face_of_face, const Mesh& mesh,
                 const std::vector<int>& added, SceneBuild build = SceneBuild::fast_queries);
