@@ -1,6 +1,7 @@
 #include "metrics/hausdorff_distance.h"
 
 #include "core/distances.h"
+#include "core/geometry.h"
 #include "metrics/cell_queue.h"
 #include "metrics/cell_table.h"
 #include "metrics/embree/triangle_scene.h"
@@ -26,9 +27,8 @@ namespace {
 
 // The parts of a cell's bound (DirectedSearch::bound_of) that do not depend on how much is
 // settled: bound (ii) then (i) with the matching face and at the corners, each of the three
-// shared-edge bounds (iii)
-// (infinity where its two faces do not qualify), and the centroid's distance with the
-// single-triangle bound of its nearest face (infinity where it has none).
+// shared-edge bounds (iii) (infinity where its two faces do not qualify), and the centroid's
+// distance with the single-triangle bound of its nearest face (infinity where it has none).
 struct BoundSteps {
   double corners = 0.0;
   std::array<double, 3> shared_edge{};
@@ -42,15 +42,6 @@ struct RecordedCell {
   BoundSteps steps;
   GrowingBox reach;
 };
-
-// Coordinate by coordinate: breaks ties between equally near points whatever their order.
-bool point_less(const Point& p, const Point& q) {
-  for (int i = 0; i < 3; ++i) {
-    if (p[i] != q[i])
-      return p[i] < q[i];
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -190,7 +181,7 @@ class DirectedSearch {
         const VertexHandle v = b.to_vertex_handle(h);
         const Point& p = points[v.idx()];
         const double d = (p - cell.corners[i]).sqrnorm();
-        if (d < best || (d == best && point_less(p, points[nearest[i].idx()]))) {
+        if (d < best || (d == best && p < points[nearest[i].idx()])) {
           best = d;
           nearest[i] = v;
         }
@@ -200,40 +191,25 @@ class DirectedSearch {
   }
 
  private:
-  // The face of B whose corners are `vertices` (the smallest index where several are), or -1:
-  // among the faces around the first vertex (its outgoing halfedges), the one whose other two
-  // corners are the other two vertices.
+  // The face of B whose corners are `vertices` (the smaller index where both sides of their
+  // first edge are), or -1: a face on the edge from the first vertex to the second whose third
+  // corner is the third vertex (OpenMesh keeps one edge per pair of vertices).
   int face_of_vertices(const std::array<VertexHandle, 3>& vertices) const {
     if (vertices[0] == vertices[1] || vertices[1] == vertices[2] || vertices[2] == vertices[0])
       return -1;
     const Mesh& b = scene_.mesh();
-    const HalfedgeHandle first = b.halfedge_handle(vertices[0]);
-    if (!first.is_valid())
+    const HalfedgeHandle h = b.find_halfedge(vertices[0], vertices[1]);
+    if (!h.is_valid())
       return -1;
     int found = -1;
-    HalfedgeHandle h = first;
-    std::size_t steps = 0;  // a guard where deleted faces left the ring open
-    do {
-      const FaceHandle f = b.face_handle(h);
-      if (f.is_valid() && !b.status(f).deleted() && (found < 0 || f.idx() < found)) {
-        const VertexHandle u = b.to_vertex_handle(h);
-        const VertexHandle w = b.to_vertex_handle(b.next_halfedge_handle(h));
-        if ((u == vertices[1] && w == vertices[2]) || (u == vertices[2] && w == vertices[1]))
-          found = f.idx();
-      }
-      h = b.next_halfedge_handle(b.opposite_halfedge_handle(h));
-    } while (h != first && ++steps < b.n_halfedges());
+    for (const HalfedgeHandle side : {h, b.opposite_halfedge_handle(h)}) {
+      const FaceHandle f = b.face_handle(side);
+      if (f.is_valid() && !b.status(f).deleted() &&
+          b.to_vertex_handle(b.next_halfedge_handle(side)) == vertices[2] &&
+          (found < 0 || f.idx() < found))
+        found = f.idx();
+    }
     return found;
-  }
-
-  // The triangle of face `face` of B, its corners in the order of the scene's triangles.
-  std::array<Point, 3> triangle_of_mesh_face(int face) const {
-    const Mesh& b = scene_.mesh();
-    std::array<Point, 3> t;
-    auto h = b.halfedge_handle(FaceHandle(face));
-    for (int c = 0; c < 3; ++c, h = b.next_halfedge_handle(h))
-      t[c] = b.point(b.to_vertex_handle(h));
-    return t;
   }
 
   // Bound (i) with the matching face: the face of B spanned by the corners' nearest vertices
@@ -248,7 +224,7 @@ class DirectedSearch {
     const int face = face_of_vertices(*vertices);
     if (face < 0)
       return std::numeric_limits<double>::infinity();
-    return single_triangle_bound(cell.corners, triangle_of_mesh_face(face), cap);
+    return single_triangle_bound(cell.corners, face_corners(scene_.mesh(), FaceHandle(face)), cap);
   }
 
   // Bound (iii): two triangles of B that share an edge (the same two points, bit for bit)

@@ -83,7 +83,7 @@ struct ValidityShortcuts {
   /// With `kept_of_input`: input_topology(input); the open loops, non-manifold vertices and
   /// orientation conflicts are then counted at the repair's changes (input_topology.h).
   const InputTopology* topology = nullptr;
-  /// With `known_input` and `kept_of_input`: the repaired mesh's scene, which finds the kept
+  /// With `input_pairs` and `kept_of_input`: the repaired mesh's scene, which finds the kept
   /// faces near the others without a pass over every face.
   const embree::TriangleScene* repaired_scene = nullptr;
   /// new_face_indices(repaired) (face_subset.h): no pass over every face to find them again.
