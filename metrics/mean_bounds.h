@@ -59,6 +59,9 @@ class MeanCellBounder {
 
  private:
   static double cell_radius(const MeanCell& cell);
+  /// Whether the triangle `c` meets one of the triangles of B `faces` (-1: none), by
+  /// edges_meet_triangles(): then their triangle_triangle_distance() is 0.
+  bool meets_one_of(const std::array<Point, 3>& c, const std::array<int, 4>& faces) const;
   bool covered_by(const std::array<Point, 3>& c, const Plane& plane,
                   const std::vector<int>& candidates) const;
 
