@@ -28,6 +28,11 @@ CaseEvaluation::CaseEvaluation(const Case& c, const EvaluationOptions& options) 
     input_sampled_faces_ = sampled_faces(face_areas(c.input), &input_shared.b_face_of_a);
     complete_face_areas_ = face_areas(c.complete);
     complete_sampled_faces_ = sampled_faces(complete_face_areas_, &input_shared.a_face_of_b);
+    if (options.literature_metrics && input_sampled_faces_->unshared_area > 0.0) {
+      input_agreement_ = sampled_agreement(
+          c.input, *complete_scene_, literature_sampling_options(options, diagonal),
+          &input_shared.b_face_of_a, nullptr, nullptr, &*input_sampled_faces_);
+    }
     if (c.input.n_faces() > 0) {
       input_scene_ = std::make_unique<embree::TriangleScene>(c.input);
       // One first pass of the complete model against the input for both of its tables.

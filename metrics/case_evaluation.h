@@ -70,6 +70,13 @@ class CaseEvaluation {
     return complete_sampled_faces_ ? &*complete_sampled_faces_ : nullptr;
   }
   const std::vector<double>& complete_face_areas() const { return complete_face_areas_; }
+  /// The input's literature samples against the complete model: sampled_agreement() over the
+  /// input's faces off the complete model, as the whole model's metrics sample a repair that
+  /// appends to the input (evaluation.cpp, repaired_agreement), or nullptr where the case has
+  /// no complete model, no literature metrics or no input face off the complete model.
+  const SampledAgreement* input_agreement() const {
+    return input_agreement_ ? &*input_agreement_ : nullptr;
+  }
   /// The normal cones at the complete model's literature samples (the points its tally
   /// gives) against the input (input_cone_answers.h), or nullptr where the case has no
   /// complete model, no input faces or no literature metrics.
@@ -112,6 +119,7 @@ class CaseEvaluation {
   std::unique_ptr<AppendedRepairStarts> appended_repair_starts_;
   std::optional<SampledFaces> input_sampled_faces_;
   std::optional<SampledFaces> complete_sampled_faces_;
+  std::optional<SampledAgreement> input_agreement_;
   std::unique_ptr<InputConeAnswers> complete_cone_answers_;
   std::unique_ptr<InputConeAnswers> truth_cone_answers_;
   std::vector<double> complete_face_areas_;

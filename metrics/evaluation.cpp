@@ -38,6 +38,16 @@ SurfaceDistanceOptions whole_model_distance_options(const EvaluationOptions& opt
   return whole;
 }
 
+SampledAgreementOptions literature_sampling_options(const EvaluationOptions& options,
+                                                    double diagonal) {
+  SampledAgreementOptions sampling;
+  sampling.thresholds = {options.f_score_tau_small_rel_diag * diagonal,
+                         options.f_score_tau_large_rel_diag * diagonal};
+  sampling.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
+  sampling.samples = options.literature_samples;
+  return sampling;
+}
+
 const MetricValue* Evaluation::find(const std::string& name) const {
   for (const auto& value : values) {
     if (value.name == name)
@@ -340,17 +350,70 @@ KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
   return tallies;
 }
 
+// The tally (literature_metrics.h, SampledFaces) of faces [first, end) of `mesh`, deleted
+// faces left out, against the faces `b_face_of_a` marks shared.
+SampledFaces tally_of_faces(const Mesh& mesh, std::size_t first, std::size_t end,
+                            const std::vector<int>& b_face_of_a) {
+  std::vector<double> areas(end - first, 0.0);
+  for (std::size_t f = first; f < end; ++f) {
+    const FaceHandle face(static_cast<int>(f));
+    if (!mesh.status(face).deleted())
+      areas[f - first] = face_area(mesh, face);
+  }
+  SampledFaces tally;
+  tally_faces(areas, &b_face_of_a, first, tally);
+  return tally;
+}
+
+// The repair's samples against the complete model (precision and a(R, C)). Where the repair
+// appends to the input and the input has faces off the complete model (noise), its input
+// faces and its new faces are sampled apart, `samples` points each, and the two agreements
+// weighed by their areas (combined_agreement): the input's part is the same for every
+// method's repair, so the case computes it once (CaseEvaluation::input_agreement), and the
+// new faces' samples are the hole region's patch samples where no new face lies on the
+// complete model (`patch_answers`). Else one sampling of the repair's unshared faces.
+SampledAgreement repaired_agreement(const Case& c, const Mesh& repaired,
+                                    const embree::TriangleScene& complete_scene,
+                                    const SampledAgreementOptions& sampling,
+                                    const SharedFaces& shared, const KnownSampledFaces& tallies,
+                                    const SampledAnswers& patch_answers,
+                                    const CaseEvaluation* known, const KeptFaces* kept) {
+  const std::size_t first = c.input.n_faces();
+  std::optional<KeptFaces> own_kept;
+  if (!kept && !known) {
+    own_kept = kept_faces(c.input, repaired);
+    kept = &*own_kept;
+  }
+  if (kept && kept->appends_to_input() && repaired.n_faces() >= first) {
+    std::optional<SampledAgreement> input_part;
+    if (known && known->input_sampled_faces()) {
+      if (const SampledAgreement* case_part = known->input_agreement())
+        input_part = *case_part;
+    } else {
+      const SampledFaces input_tally = tally_of_faces(repaired, 0, first, shared.b_face_of_a);
+      if (input_tally.unshared_area > 0.0)
+        input_part = sampled_agreement(repaired, complete_scene, sampling, &shared.b_face_of_a,
+                                       nullptr, nullptr, &input_tally);
+    }
+    if (input_part) {
+      const SampledFaces patch_tally =
+          tally_of_faces(repaired, first, repaired.n_faces(), shared.b_face_of_a);
+      return combined_agreement(
+          *input_part, sampled_agreement(repaired, complete_scene, sampling, &shared.b_face_of_a,
+                                         &patch_answers, nullptr, &patch_tally));
+    }
+  }
+  return sampled_agreement(repaired, complete_scene, sampling, &shared.b_face_of_a, &patch_answers,
+                           nullptr, tallies.repaired ? &*tallies.repaired : nullptr);
+}
+
 void add_literature_metrics(const Case& c, const MethodResult& result,
                             const std::vector<int>& new_faces, const EvaluationOptions& options,
                             double diagonal, const embree::TriangleScene& complete_scene,
                             const embree::TriangleScene& repaired_scene,
                             const RegionMeshes& regions, const CaseEvaluation* known,
                             const KeptFaces* kept, Recorder& out) {
-  SampledAgreementOptions sampling;
-  sampling.thresholds = {options.f_score_tau_small_rel_diag * diagonal,
-                         options.f_score_tau_large_rel_diag * diagonal};
-  sampling.normal_cone.tolerance = options.normal_cone_tolerance_rel_diag * diagonal;
-  sampling.samples = options.literature_samples;
+  const SampledAgreementOptions sampling = literature_sampling_options(options, diagonal);
   // The hole region first: where the whole model's unshared faces are the hole region's (no
   // noise, a patch of new faces), the whole model's samples are its samples, and their
   // answers are taken from it (SampledAnswers: the same numbers). The truth's samples against
@@ -386,12 +449,11 @@ void add_literature_metrics(const Case& c, const MethodResult& result,
     with_patch = input_cones->with_patch(repaired_scene.added_part());
     complete_answers = &with_patch;
   }
-  add_agreement(
-      out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
-      sampled_agreement(result.repaired, complete_scene, sampling, &shared.b_face_of_a,
-                        &patch_answers, nullptr, tallies.repaired ? &*tallies.repaired : nullptr),
-      sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b, complete_answers,
-                        nullptr, tallies.complete()));
+  add_agreement(out, kFScore0p5PctFraction, kFScore1PctFraction, kNormalConsistencyFraction,
+                repaired_agreement(c, result.repaired, complete_scene, sampling, shared, tallies,
+                                   patch_answers, known, kept),
+                sampled_agreement(c.complete, repaired_scene, sampling, &shared.a_face_of_b,
+                                  complete_answers, nullptr, tallies.complete()));
   if (hole) {
     add_agreement(out, kHoleFScore0p5PctFraction, kHoleFScore1PctFraction,
                   kHoleNormalConsistencyFraction, hole->first, hole->second);

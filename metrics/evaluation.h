@@ -5,6 +5,7 @@
 
 #include "core/case.h"
 #include "core/method_result.h"
+#include "metrics/literature_metrics.h"
 #include "metrics/surface_distance.h"
 
 #include <string>
@@ -104,6 +105,11 @@ struct Evaluation {
 /// The options of the whole model's distances (repaired against complete) for a case whose
 /// complete model has this bounding-box diagonal.
 SurfaceDistanceOptions whole_model_distance_options(const EvaluationOptions& options,
+                                                    double diagonal);
+
+/// The options of the whole model's sampled literature metrics (F-score thresholds, normal
+/// cone tolerance, samples) for a case whose complete model has this bounding-box diagonal.
+SampledAgreementOptions literature_sampling_options(const EvaluationOptions& options,
                                                     double diagonal);
 
 /// Evaluates `result` (its repaired mesh and hole reports) against the ground truth of `c`.

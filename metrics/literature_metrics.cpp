@@ -279,6 +279,24 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
   return agreement;
 }
 
+SampledAgreement combined_agreement(const SampledAgreement& first, const SampledAgreement& second) {
+  if (!(second.area > 0.0))
+    return first;
+  if (!(first.area > 0.0))
+    return second;
+  SampledAgreement both;
+  both.area = first.area + second.area;
+  both.sampled_area = first.sampled_area + second.sampled_area;
+  both.samples = first.samples + second.samples;
+  const double w1 = first.area / both.area, w2 = second.area / both.area;
+  both.within_fraction.resize(first.within_fraction.size());
+  for (std::size_t t = 0; t < both.within_fraction.size(); ++t)
+    both.within_fraction[t] = w1 * first.within_fraction[t] + w2 * second.within_fraction[t];
+  both.abs_cosine_mean = w1 * first.abs_cosine_mean + w2 * second.abs_cosine_mean;
+  both.fraction_error = std::hypot(w1 * first.fraction_error, w2 * second.fraction_error);
+  return both;
+}
+
 double f_score(double precision, double recall) {
   return precision + recall > 0.0 ? 2.0 * precision * recall / (precision + recall) : 0.0;
 }

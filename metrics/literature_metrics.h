@@ -16,8 +16,11 @@
 //    |n_A . n_B|, n_B from B's normal cone at the closest point (normal_cone.h);
 //  - precision, recall and normal consistency are estimated from `samples` points per surface
 //    spread over its area (systematic sampling along the faces' cumulative area, a fixed
-//    low-discrepancy point inside each face); faces A shares exactly with B count exactly
-//    (distance 0, |cosine| 1) and are not sampled. Sampling error (99 %): at most
+//    low-discrepancy point inside each face; where the caller splits A in two parts, as the
+//    whole model does for a repair's input faces and new faces under noise, each part gets
+//    `samples` points and combined_agreement() weighs them by area); faces A shares exactly
+//    with B count exactly (distance 0, |cosine| 1) and are not sampled. Sampling error
+//    (99 %): at most
 //    2.58 sqrt(p (1 - p) / N) <= 1.29 / sqrt(N) of the sampled area's share, for P and R; at
 //    most twice that for F.
 //  - edge Chamfer distance = (e(S_R, S_C) + e(S_C, S_R)) / 2, with S_R the sharp edges of the
@@ -127,6 +130,13 @@ SampledAgreement sampled_agreement(const Mesh& a, const embree::TriangleScene& b
                                    const SampledAnswers* known = nullptr,
                                    SampledAnswers* answers = nullptr,
                                    const SampledFaces* known_faces = nullptr);
+
+/// Two parts of A sampled apart (each by sampled_agreement() over its own faces, with its own
+/// tally) as one agreement of A: each fraction and the mean |cosine| the parts' area-weighted
+/// mean, the samples and areas their sums, the sampling error
+/// sqrt((a1 e1)^2 + (a2 e2)^2) / (a1 + a2) (stratified sampling: at most the error of one
+/// sample of either count over both). A part with no area leaves the other as it is.
+SampledAgreement combined_agreement(const SampledAgreement& first, const SampledAgreement& second);
 
 /// The points `sampled_agreement` takes on A (faces skipped where `skip` says so): `count`
 /// points spread by area, and the face each lies on.

@@ -277,6 +277,95 @@ TEST(LiteratureMetrics, FScoreAndNormalConsistencyMatchMonteCarloWithinTheSampli
   }
 }
 
+// A's faces in two parts sampled apart (as the whole model's metrics sample a repair's input
+// faces and its new faces under noise), each with the full count, combined by area: the same
+// Monte Carlo reference over the whole of A, within the combined sampling error.
+TEST(LiteratureMetrics, TwoPartsSampledApartMatchMonteCarloWithinTheSamplingError) {
+  for (const auto& pair : pairs()) {
+    SCOPED_TRACE(pair.name);
+    const embree::TriangleScene b_scene(pair.b);
+    SampledAgreementOptions options;
+    options.thresholds = {pair.tau};
+    options.normal_cone.tolerance = 1e-3;
+    const SharedFaces shared = shared_faces(pair.a, pair.b);
+    const std::vector<double> areas = face_areas(pair.a);
+    const std::size_t middle = areas.size() / 2;
+    SampledFaces first_part, second_part;
+    tally_faces({areas.begin(), areas.begin() + middle}, &shared.b_face_of_a, 0, first_part);
+    tally_faces({areas.begin() + middle, areas.end()}, &shared.b_face_of_a, middle, second_part);
+    const auto first = sampled_agreement(pair.a, b_scene, options, &shared.b_face_of_a, nullptr,
+                                         nullptr, &first_part);
+    const auto second = sampled_agreement(pair.a, b_scene, options, &shared.b_face_of_a, nullptr,
+                                          nullptr, &second_part);
+    const auto both = combined_agreement(first, second);
+    EXPECT_EQ(both.samples, first.samples + second.samples);
+    double area = 0.0;
+    for (double face : areas)
+      area += face;
+    EXPECT_NEAR(both.area, area, 1e-12 * area);
+    const auto a_to_b = brute_force(uniform_points(triangles_of(pair.a), kMonteCarloPoints, 5),
+                                    triangles_of(pair.b), 1e-3);
+    const Estimate p = share_within(a_to_b.distances, pair.tau);
+    EXPECT_NEAR(both.within_fraction[0], p.value, both.fraction_error + p.error);
+    const Estimate c = mean_of(a_to_b.abs_cosines);
+    EXPECT_NEAR(both.abs_cosine_mean, c.value, both.fraction_error + c.error);
+  }
+}
+
+// Two parts of unequal area, one wholly within tau of B and one wholly beyond it: the share
+// within is the first part's share of the area, exactly (each part's samples all agree).
+TEST(LiteratureMetrics, TwoPartsWeighByTheirAreas) {
+  TriangleSoup soup;  // a unit square 1e-3 above B and a 3 x 3 square 1 above it
+  soup.points = {Point(0, 0, 1e-3), Point(1, 0, 1e-3), Point(1, 1, 1e-3), Point(0, 1, 1e-3),
+                 Point(0, 0, 1),    Point(3, 0, 1),    Point(3, 3, 1),    Point(0, 3, 1)};
+  soup.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+  const Mesh a = build_mesh(soup);
+  const Mesh b = build_mesh(test::grid_soup(4));
+  const embree::TriangleScene b_scene(b);
+  SampledAgreementOptions options;
+  options.thresholds = {0.01};
+  options.samples = 1000;
+  const std::vector<double> areas = face_areas(a);
+  SampledFaces near_part, far_part;
+  tally_faces({areas.begin(), areas.begin() + 2}, nullptr, 0, near_part);
+  tally_faces({areas.begin() + 2, areas.end()}, nullptr, 2, far_part);
+  const auto near = sampled_agreement(a, b_scene, options, nullptr, nullptr, nullptr, &near_part);
+  const auto far = sampled_agreement(a, b_scene, options, nullptr, nullptr, nullptr, &far_part);
+  ASSERT_EQ(near.within_fraction[0], 1.0);
+  ASSERT_EQ(far.within_fraction[0], 0.0);
+  EXPECT_DOUBLE_EQ(combined_agreement(near, far).within_fraction[0], 0.1);
+  EXPECT_DOUBLE_EQ(combined_agreement(far, near).within_fraction[0], 0.1);
+  EXPECT_NEAR(combined_agreement(near, far).abs_cosine_mean, 1.0, 1e-12);  // parallel planes
+}
+
+TEST(LiteratureMetrics, APartWithoutAreaLeavesTheOtherAsItIs) {
+  SampledAgreement part;
+  part.within_fraction = {0.25, 0.5};
+  part.abs_cosine_mean = 0.75;
+  part.area = 2.0;
+  part.sampled_area = 1.5;
+  part.samples = 100;
+  part.fraction_error = 0.1;
+  SampledAgreement none;
+  none.within_fraction = {0.0, 0.0};
+  for (const auto& both : {combined_agreement(part, none), combined_agreement(none, part)}) {
+    EXPECT_EQ(both.within_fraction, part.within_fraction);
+    EXPECT_EQ(both.abs_cosine_mean, part.abs_cosine_mean);
+    EXPECT_EQ(both.samples, part.samples);
+    EXPECT_EQ(both.fraction_error, part.fraction_error);
+  }
+  // Two parts of equal area: the mean of their fractions, the error sqrt(2) / 2 of each.
+  SampledAgreement other = part;
+  other.within_fraction = {0.75, 1.0};
+  other.abs_cosine_mean = 0.25;
+  const auto both = combined_agreement(part, other);
+  EXPECT_DOUBLE_EQ(both.within_fraction[0], 0.5);
+  EXPECT_DOUBLE_EQ(both.within_fraction[1], 0.75);
+  EXPECT_DOUBLE_EQ(both.abs_cosine_mean, 0.5);
+  EXPECT_DOUBLE_EQ(both.area, 4.0);
+  EXPECT_DOUBLE_EQ(both.fraction_error, 0.1 * std::sqrt(0.5));
+}
+
 // The sampled shares are neither all 0 nor all 1 on most pairs: the comparison above tests
 // something.
 TEST(LiteratureMetrics, ThePairsHaveFractionalShares) {
