@@ -37,6 +37,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -47,6 +48,18 @@ namespace holebench {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// HOLEBENCH_BENCHMARK_THREADS=N runs every benchmark on at most N threads: N = 1 is how a
+// nightly job runs on two workers, and under valgrind (callgrind) it makes a function's
+// instruction count its own work, not the share of it that the counted thread took.
+const std::unique_ptr<const tbb::global_control> thread_limit = [] {
+  const char* text = std::getenv("HOLEBENCH_BENCHMARK_THREADS");
+  const long threads = text ? std::strtol(text, nullptr, 10) : 0;
+  return threads > 0
+             ? std::make_unique<const tbb::global_control>(
+                   tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads))
+             : nullptr;
+}();
 
 // A torus of n x m quads (2nm triangles), outward oriented.
 Mesh torus(int n, int m, double bump) {

@@ -76,10 +76,13 @@ Polygon2 clip_to_triangle(Polygon2 subject, std::array<Point2, 3> t) {
 
 }  // namespace
 
-bool MeanCellBounder::meets_one_of(const std::array<Point, 3>& c,
-                                   const std::array<int, 4>& faces) const {
+bool MeanCellBounder::meets_one_of(const std::array<Point, 3>& c, const std::array<int, 4>& faces,
+                                   const Point& p, double radius) const {
   return std::any_of(faces.begin(), faces.end(), [&](int face) {
-    return face >= 0 && edges_meet_triangles(c, scene_.triangle_of_face(face));
+    if (face < 0)
+      return false;
+    const auto& t = scene_.triangle_of_face(face);
+    return point_triangle_distance(p, t) <= radius && edges_meet_triangles(c, t);
   });
 }
 
@@ -142,16 +145,17 @@ void MeanCellBounder::bound(MeanCell& cell, GrowingBox* reach) const {
       0.25 * std::max(options_.error_bound, options_.relative_error_bound * sampled);
   if (0.5 * (hi - lo) > useful && sampled - lo > useful && lo < centroid_radius &&
       sampled <= 4.0 * centroid_radius) {
+    const double radius = sampled + centroid_radius;
     if (reach)
-      reach->add_ball(centroid, sampled + centroid_radius);
-    // A cell that meets one of the triangles nearest to its centroid and corners (under
-    // noise, most cells that get this far cross B there) has minimum 0, and 0 leaves lo as
-    // it is: the search for the near triangles is skipped (meets_one_of: the same test that
-    // makes triangle_triangle_distance answer 0, and such a triangle is within the radius).
-    const auto near =
-        meets_one_of(c, faces)
-            ? std::nullopt
-            : scene_.faces_within(centroid, sampled + centroid_radius, kMaxExactMinimumFaces);
+      reach->add_ball(centroid, radius);
+    // A cell that meets one of the triangles nearest to its centroid and corners within the
+    // radius (under noise, most cells that get this far cross B there) has minimum 0, which
+    // leaves lo as it is: the search for the near triangles is skipped. meets_one_of() asks
+    // what the loop below would: whether faces_within() holds the triangle (its distance
+    // within the radius) and the test that makes triangle_triangle_distance answer 0.
+    const auto near = meets_one_of(c, faces, centroid, radius)
+                          ? std::nullopt
+                          : scene_.faces_within(centroid, radius, kMaxExactMinimumFaces);
     if (near) {
       // A triangle whose box is farther from the cell's box than the minimum so far (with
       // a margin far above rounding) is farther than it: only the test that makes

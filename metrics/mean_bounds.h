@@ -59,9 +59,11 @@ class MeanCellBounder {
 
  private:
   static double cell_radius(const MeanCell& cell);
-  /// Whether the triangle `c` meets one of the triangles of B `faces` (-1: none), by
+  /// Whether the triangle `c` meets one of the triangles of B `faces` (-1: none) that lie
+  /// within `radius` of `p` (point_triangle_distance(), as faces_within() takes them), by
   /// edges_meet_triangles(): then their triangle_triangle_distance() is 0.
-  bool meets_one_of(const std::array<Point, 3>& c, const std::array<int, 4>& faces) const;
+  bool meets_one_of(const std::array<Point, 3>& c, const std::array<int, 4>& faces, const Point& p,
+                    double radius) const;
   bool covered_by(const std::array<Point, 3>& c, const Plane& plane,
                   const std::vector<int>& candidates) const;
 
