@@ -312,6 +312,18 @@ void add_agreement(Recorder& out, const char* f_small, const char* f_large, cons
   out.add(consistency, 0.5 * (precision.abs_cosine_mean + recall.abs_cosine_mean));
 }
 
+// face_area() of faces [first, end) of `mesh` (zero for a deleted face), at the cost of
+// those faces: face_areas() of a range.
+std::vector<double> areas_of_faces(const Mesh& mesh, std::size_t first, std::size_t end) {
+  std::vector<double> areas(end - first, 0.0);
+  for (std::size_t f = first; f < end; ++f) {
+    const FaceHandle face(static_cast<int>(f));
+    if (!mesh.status(face).deleted())
+      areas[f - first] = face_area(mesh, face);
+  }
+  return areas;
+}
+
 // The sampled metrics' tallies of a repair that appends to the input and of the complete
 // model against it, from the case's (the same sums and faces as sampled_faces()): the input's
 // continued over the new faces; the complete model's against the input where no new face is
@@ -332,14 +344,10 @@ KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
       repaired.n_faces() < c.input.n_faces())
     return tallies;
   const std::size_t first = c.input.n_faces();
-  std::vector<double> new_areas(repaired.n_faces() - first, 0.0);
+  const std::vector<double> new_areas = areas_of_faces(repaired, first, repaired.n_faces());
   bool new_face_on_complete = false;
-  for (std::size_t f = first; f < repaired.n_faces(); ++f) {
-    const FaceHandle face(static_cast<int>(f));
-    if (!repaired.status(face).deleted())
-      new_areas[f - first] = face_area(repaired, face);
+  for (std::size_t f = first; f < repaired.n_faces(); ++f)
     new_face_on_complete = new_face_on_complete || shared.b_face_of_a[f] >= 0;
-  }
   tallies.repaired = continued_tally(*known->input_sampled_faces());
   tally_faces(new_areas, &shared.b_face_of_a, first, *tallies.repaired);
   if (new_face_on_complete) {
@@ -354,14 +362,8 @@ KnownSampledFaces known_sampled_faces(const Case& c, const Mesh& repaired,
 // faces left out, against the faces `b_face_of_a` marks shared.
 SampledFaces tally_of_faces(const Mesh& mesh, std::size_t first, std::size_t end,
                             const std::vector<int>& b_face_of_a) {
-  std::vector<double> areas(end - first, 0.0);
-  for (std::size_t f = first; f < end; ++f) {
-    const FaceHandle face(static_cast<int>(f));
-    if (!mesh.status(face).deleted())
-      areas[f - first] = face_area(mesh, face);
-  }
   SampledFaces tally;
-  tally_faces(areas, &b_face_of_a, first, tally);
+  tally_faces(areas_of_faces(mesh, first, end), &b_face_of_a, first, tally);
   return tally;
 }
 

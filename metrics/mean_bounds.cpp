@@ -78,12 +78,16 @@ Polygon2 clip_to_triangle(Polygon2 subject, std::array<Point2, 3> t) {
 
 bool MeanCellBounder::meets_one_of(const std::array<Point, 3>& c, const std::array<int, 4>& faces,
                                    const Point& p, double radius) const {
-  return std::any_of(faces.begin(), faces.end(), [&](int face) {
-    if (face < 0)
-      return false;
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const int face = faces[k];
+    // Each triangle once: the nearest to the centroid and to the corners are mostly one.
+    if (face < 0 || std::find(faces.begin(), faces.begin() + k, face) != faces.begin() + k)
+      continue;
     const auto& t = scene_.triangle_of_face(face);
-    return point_triangle_distance(p, t) <= radius && edges_meet_triangles(c, t);
-  });
+    if (point_triangle_distance(p, t) <= radius && edges_meet_triangles(c, t))
+      return true;
+  }
+  return false;
 }
 
 // Bounds of d over the cell, pointwise (first order) and of its mean and mean square
