@@ -314,9 +314,11 @@ class DirectedSearch {
   }
 
  public:
-  // Every step of the cell's bound, whatever is settled (HausdorffCellBounds).
-  BoundSteps all_steps(const TriangleCell& cell) const {
-    LiveSteps live{*this, cell};
+  // Every step of the cell's bound, whatever is settled (HausdorffCellBounds). `centroid`
+  // (optional): the answer of the centroid's query, asked before (FirstPass::centroid).
+  BoundSteps all_steps(const TriangleCell& cell,
+                       const embree::ClosestPoint* centroid = nullptr) const {
+    LiveSteps live{*this, cell, -1, centroid};
     BoundSteps steps;
     steps.corners = live.corners();
     for (int i = 0; i < 3; ++i)
@@ -335,6 +337,7 @@ class DirectedSearch {
     const DirectedSearch& search;
     const TriangleCell& cell;
     int nearest_face = -1;
+    const embree::ClosestPoint* known_centroid = nullptr;  // the centroid's answer, if asked
 
     // Bound (ii): every point lies within longest edge / sqrt(3) of a corner (the
     // equilateral triangle is the worst case), and the distance is 1-Lipschitz. Then bound
@@ -365,6 +368,10 @@ class DirectedSearch {
     // The centroid's query, with an upper bound from the corners (1-Lipschitz) and
     // `cell_upper`, an upper bound over the whole cell (the steps before).
     double centroid_distance(double cell_upper) {
+      if (known_centroid) {  // the same answer, whatever bound its query had
+        nearest_face = known_centroid->face;
+        return known_centroid->distance;
+      }
       const auto& c = cell.corners;
       const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
       const auto nearest = search.scene_.closest_point(
@@ -479,7 +486,7 @@ HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleS
   std::vector<RecordedCell> recorded(cells.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      recorded[i].steps = search.all_steps(cells[i]);
+      recorded[i].steps = search.all_steps(cells[i], &first_pass.centroid[faces[i]]);
       // The centroid's query read the faces of B0 within its distance (as
       // LiveSteps::centroid_distance() places it), padded by 1e-9 of its scale so that a
       // face of B at that distance, up to rounding, meets the ball's box.

@@ -94,7 +94,8 @@ bool MeanCellBounder::meets_one_of(const std::array<Point, 3>& c, const std::arr
 // (second order).
 // `reach` (optional): grows to hold every ball of B that the bounds' queries read (the
 // corners' distances come from the first pass, whose balls the caller adds).
-void MeanCellBounder::bound(MeanCell& cell, GrowingBox* reach) const {
+void MeanCellBounder::bound(MeanCell& cell, GrowingBox* reach,
+                            const embree::ClosestPoint* centroid_answer) const {
   const auto& c = cell.corners;
   const auto& d = cell.corner_distance;
   const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
@@ -107,7 +108,9 @@ void MeanCellBounder::bound(MeanCell& cell, GrowingBox* reach) const {
   double centroid_radius = 0.0;
   for (const Point& corner : c)
     centroid_radius = std::max(centroid_radius, (corner - centroid).norm());
-  const auto nearest = scene_.closest_point(centroid, distance_bound_from_corners(cell, centroid));
+  const auto nearest =
+      centroid_answer ? *centroid_answer
+                      : scene_.closest_point(centroid, distance_bound_from_corners(cell, centroid));
   if (reach)
     reach->add_ball(centroid, nearest.distance);
 

@@ -47,8 +47,10 @@ class MeanCellBounder {
   /// The cell's first bounds: pointwise, of its mean and of its mean square. One
   /// closest-point query (the centroid's). `reach` (optional): grows to hold every ball of B
   /// that the bounds' queries read (the corners' distances come from the first pass, whose
-  /// balls the caller adds).
-  void bound(MeanCell& cell, GrowingBox* reach = nullptr) const;
+  /// balls the caller adds). `centroid` (optional): the answer of the centroid's query,
+  /// asked before (FirstPass::centroid); then no query is made.
+  void bound(MeanCell& cell, GrowingBox* reach = nullptr,
+             const embree::ClosestPoint* centroid = nullptr) const;
 
   /// Whether the plane bounds are worth trying on the cell (B's triangles near it few).
   bool near_enough_to_tighten(const MeanCell& cell) const;

@@ -2,6 +2,7 @@
 
 #include "metrics/embree/triangle_scene.h"
 #include "metrics/shared_faces.h"
+#include "metrics/triangle_cell.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -83,6 +84,18 @@ FirstPass first_pass(const Mesh& a, const Mesh& b, const embree::TriangleScene& 
   FirstPass pass;
   pass.b_face_of_a = shared_faces(a, b).b_face_of_a;
   pass.vertices = vertex_distances(a, b_scene, &pass.b_face_of_a);
+  pass.centroid.assign(a.n_faces(), embree::ClosestPoint{});
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, a.n_faces(), 256), [&](const auto& range) {
+    for (std::size_t f = range.begin(); f != range.end(); ++f) {
+      if (pass.b_face_of_a[f] >= 0)
+        continue;
+      const TriangleCell cell = face_cell(a, FaceHandle(static_cast<int>(f)), pass.vertices);
+      const auto& c = cell.corners;
+      const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+      pass.centroid[f] =
+          b_scene.closest_point(centroid, distance_bound_from_corners(cell, centroid));
+    }
+  });
   return pass;
 }
 

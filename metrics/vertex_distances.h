@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "metrics/embree/triangle_scene.h"
 
 #include <cstddef>
 #include <functional>
@@ -80,6 +81,12 @@ const VertexDistances& vertex_distances(const Mesh& a, const embree::TriangleSce
 struct FirstPass {
   std::vector<int> b_face_of_a;  ///< by face of A: the face of B it coincides with, or -1
   VertexDistances vertices;      ///< vertex_distances(a, b_scene, &b_face_of_a)
+  /// By face of A not lying on B, the closest point of B to the centroid of its cell
+  /// (face_cell(): the point both first-bound tables query first, the mean's and the
+  /// Hausdorff distance's), asked once for both; face -1 for the faces lying on B. The
+  /// answer does not depend on the upper bound a query is given, so each table takes it as
+  /// its own query would have answered.
+  std::vector<embree::ClosestPoint> centroid;
 };
 
 /// `b` is the mesh of `b_scene`.
