@@ -372,8 +372,7 @@ class DirectedSearch {
         nearest_face = known_centroid->face;
         return known_centroid->distance;
       }
-      const auto& c = cell.corners;
-      const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+      const Point centroid = cell_centroid(cell);
       const auto nearest = search.scene_.closest_point(
           centroid, std::min(cell_upper, distance_bound_from_corners(cell, centroid)));
       nearest_face = nearest.face;
@@ -490,8 +489,7 @@ HausdorffCellBounds::HausdorffCellBounds(const Mesh& a0, const embree::TriangleS
       // The centroid's query read the faces of B0 within its distance (as
       // LiveSteps::centroid_distance() places it), padded by 1e-9 of its scale so that a
       // face of B at that distance, up to rounding, meets the ball's box.
-      const auto& c = cells[i].corners;
-      const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+      const Point centroid = cell_centroid(cells[i]);
       const double d = recorded[i].steps.centroid_distance;
       const double radius =
           d + 1e-9 * (d + std::abs(centroid[0]) + std::abs(centroid[1]) + std::abs(centroid[2]));

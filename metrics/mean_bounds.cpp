@@ -98,7 +98,7 @@ void MeanCellBounder::bound(MeanCell& cell, GrowingBox* reach,
                             const embree::ClosestPoint* centroid_answer) const {
   const auto& c = cell.corners;
   const auto& d = cell.corner_distance;
-  const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+  const Point centroid = cell_centroid(cell);
   // Farthest any point of the cell is from a corner (its longest incident edge) or from
   // the centroid (its farthest corner).
   const std::array<double, 3> edge = {(c[1] - c[0]).norm(), (c[2] - c[1]).norm(),
@@ -240,7 +240,7 @@ bool MeanCellBounder::near_enough_to_tighten(const MeanCell& cell) const {
 
 double MeanCellBounder::cell_radius(const MeanCell& cell) {
   const auto& c = cell.corners;
-  const Point g = (c[0] + c[1] + c[2]) / 3.0;
+  const Point g = cell_centroid(cell);
   double radius = 0.0;
   for (const Point& corner : c)
     radius = std::max(radius, (corner - g).norm());
@@ -250,7 +250,7 @@ double MeanCellBounder::cell_radius(const MeanCell& cell) {
 void MeanCellBounder::tighten(MeanCell& cell) const {
   cell.planes_tried = true;  // enqueue() counts the candidates' search as one query
   const auto& c = cell.corners;
-  const Point g = (c[0] + c[1] + c[2]) / 3.0;
+  const Point g = cell_centroid(cell);
   const double radius = cell_radius(cell);
   const std::vector<int> candidates = scene_.faces_within(g, cell.hi + radius);
   if (candidates.empty())

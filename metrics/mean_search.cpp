@@ -155,16 +155,18 @@ class MeanSearch {
 
   // bound() of each cell, with the box of the balls of B its bounds read (the corners'
   // included).
-  // `centroid`: by cell, the answer of its centroid's query, asked before.
+  // `faces`: by cell, its face of A; `centroid`: by face of A, the answer of its cell
+  // centroid's query, asked before (FirstPass::centroid).
   void bound_each_with_reach(std::vector<MeanCell>& cells, std::vector<GrowingBox>& reach,
-                             const std::vector<const embree::ClosestPoint*>& centroid) const {
+                             const std::vector<int>& faces,
+                             const std::vector<embree::ClosestPoint>& centroid) const {
     reach.assign(cells.size(), GrowingBox());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 256),
                       [&](const auto& range) {
                         for (std::size_t i = range.begin(); i != range.end(); ++i) {
                           for (int k = 0; k < 3; ++k)
                             reach[i].add_ball(cells[i].corners[k], cells[i].corner_distance[k]);
-                          bounder_.bound(cells[i], &reach[i], centroid[i]);
+                          bounder_.bound(cells[i], &reach[i], &centroid[faces[i]]);
                         }
                       });
   }
@@ -428,12 +430,8 @@ MeanCellBounds::MeanCellBounds(const Mesh& a0, const embree::TriangleScene& b0_s
       faces.push_back(f.idx());
     }
   }
-  std::vector<const embree::ClosestPoint*> centroid;
-  centroid.reserve(faces.size());
-  for (int f : faces)
-    centroid.push_back(&first_pass.centroid[f]);
   std::vector<GrowingBox> reach;
-  MeanSearch(b0_scene, options).bound_each_with_reach(cells, reach, centroid);
+  MeanSearch(b0_scene, options).bound_each_with_reach(cells, reach, faces, first_pass.centroid);
   table_->cells.reserve(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const MeanCell& cell = cells[i];

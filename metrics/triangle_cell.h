@@ -43,6 +43,14 @@ CellKey key_of(const TriangleCell& cell);
 /// and nearest faces from the first pass over A's vertices.
 TriangleCell face_cell(const Mesh& a, FaceHandle f, const VertexDistances& vertices);
 
+/// The centroid of the cell, (c0 + c1 + c2) / 3 summed in corner order: the point the
+/// searches and the case's first pass query first, which must be the same bits in each so
+/// that one query's answer serves them all (FirstPass::centroid).
+inline Point cell_centroid(const TriangleCell& cell) {
+  const auto& c = cell.corners;
+  return (c[0] + c[1] + c[2]) / 3.0;
+}
+
 /// An upper bound on the distance to B at a point `p` of the cell from its corners' distances
 /// (1-Lipschitz): the least of d(corner, B) + |p - corner|.
 double distance_bound_from_corners(const TriangleCell& cell, const Point& p);

@@ -90,8 +90,7 @@ FirstPass first_pass(const Mesh& a, const Mesh& b, const embree::TriangleScene& 
       if (pass.b_face_of_a[f] >= 0)
         continue;
       const TriangleCell cell = face_cell(a, FaceHandle(static_cast<int>(f)), pass.vertices);
-      const auto& c = cell.corners;
-      const Point centroid = (c[0] + c[1] + c[2]) / 3.0;
+      const Point centroid = cell_centroid(cell);
       pass.centroid[f] =
           b_scene.closest_point(centroid, distance_bound_from_corners(cell, centroid));
     }

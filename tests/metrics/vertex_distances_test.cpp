@@ -32,6 +32,7 @@ TEST(FirstPass, VertexAndCentroidAnswersAreTheScenesClosestPoints) {
         continue;
       }
       ++unshared;
+      // Summed as the tables sum it (cell_centroid), without the helper: the same bits.
       const auto& corners = face_cell(c.input, f, pass.vertices).corners;
       const Point centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
       const embree::ClosestPoint direct = complete_scene.closest_point(centroid);
